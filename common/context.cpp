@@ -1,0 +1,167 @@
+#include "common/context.hpp"
+
+#include "common/error.hpp"
+#include "common/gl.hpp"
+
+#include <glad/egl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <mutex>
+
+namespace wb {
+namespace {
+
+std::mutex g_errorMutex;
+std::vector<std::string> g_glErrors;
+
+// KHR_debug: errors are collected (tests fail on them, debug builds stop on them); performance and
+// portability warnings are printed once so students see them without drowning in them.
+void APIENTRY onGlDebug(GLenum source, GLenum type, GLuint, GLenum severity, GLsizei,
+                        const GLchar* message, const void*) {
+  if (type == GL_DEBUG_TYPE_ERROR && source != GL_DEBUG_SOURCE_SHADER_COMPILER) {
+    std::lock_guard<std::mutex> lock(g_errorMutex);
+    g_glErrors.emplace_back(message);
+  } else if (severity == GL_DEBUG_SEVERITY_HIGH) {
+    std::fprintf(stderr, "GL: %s\n", message);
+  }
+}
+
+void installDebugOutput() {
+  glEnable(GL_DEBUG_OUTPUT);
+  glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);  // the callback runs inside the failing call
+  glDebugMessageCallback(onGlDebug, nullptr);
+}
+
+void requireGl45(const char* how) {
+  GLint major = 0, minor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  if (major * 10 + minor < 45)
+    throw ContextError(std::string(how) + " gave OpenGL " + std::to_string(major) + "." +
+                       std::to_string(minor) + ", but the workbook needs 4.5 core. " +
+                       "Install Mesa (sudo apt-get install libgl1-mesa-dri libegl-mesa0).");
+}
+
+class EglContext final : public Context {
+public:
+  explicit EglContext(bool debug) {
+    // glad's EGL loader runs twice: once for the client entry points, once for the display's.
+    if (!gladLoaderLoadEGL(EGL_NO_DISPLAY))
+      throw ContextError("cannot load libEGL. Install it with: sudo apt-get install libegl1 libegl-mesa0");
+    // Before eglInitialize only client entry points are known; check the pointers, not versions.
+    if (glad_eglGetPlatformDisplay)
+      display_ = eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    else if (glad_eglGetPlatformDisplayEXT)
+      display_ = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    if (display_ == EGL_NO_DISPLAY) display_ = eglGetDisplay(EGL_DEFAULT_DISPLAY);
+    EGLint major = 0, minor = 0;
+    if (display_ == EGL_NO_DISPLAY || !eglInitialize(display_, &major, &minor))
+      throw ContextError("no EGL display (surfaceless Mesa). Install it with: "
+                         "sudo apt-get install libegl-mesa0 libgl1-mesa-dri");
+    gladLoaderLoadEGL(display_);
+    eglBindAPI(EGL_OPENGL_API);
+    const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+                              EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                              EGL_CONTEXT_OPENGL_DEBUG, debug ? EGL_TRUE : EGL_FALSE, EGL_NONE};
+    context_ = eglCreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
+    if (context_ == EGL_NO_CONTEXT ||
+        !eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+      throw ContextError("EGL could not create a surfaceless OpenGL 4.5 core context "
+                         "(EGL error 0x" + hex(eglGetError()) + "). Mesa 20 or newer provides one.");
+    if (!gladLoaderLoadGL()) throw ContextError("cannot load OpenGL entry points through EGL");
+    requireGl45("EGL");
+  }
+  ~EglContext() override {
+    eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
+    eglTerminate(display_);
+  }
+  bool headless() const override { return true; }
+
+private:
+  static std::string hex(EGLint v) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%04x", static_cast<unsigned>(v));
+    return buf;
+  }
+  EGLDisplay display_ = EGL_NO_DISPLAY;
+  EGLContext context_ = EGL_NO_CONTEXT;
+};
+
+std::string g_glfwError;
+
+class GlfwContext final : public Context {
+public:
+  explicit GlfwContext(const ContextOptions& o) {
+    glfwSetErrorCallback([](int, const char* msg) { g_glfwError = msg; });
+    const char* display = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    if ((!display || !*display) && (!wayland || !*wayland))
+      throw ContextError("no display found (DISPLAY and WAYLAND_DISPLAY are not set). "
+                         "Add --headless to render to a file instead, e.g. --headless --screenshot out.png");
+    if (!glfwInit())
+      throw ContextError("cannot open the display (" + g_glfwError +
+                         "). Add --headless to render to a file instead.");
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, o.debug ? GLFW_TRUE : GLFW_FALSE);
+    window_ = glfwCreateWindow(o.width, o.height, o.title.c_str(), nullptr, nullptr);
+    if (!window_) {
+      glfwTerminate();
+      throw ContextError("cannot create an OpenGL 4.5 core window (" + g_glfwError +
+                         "). Add --headless to use Mesa's software renderer instead.");
+    }
+    glfwMakeContextCurrent(window_);
+    glfwSwapInterval(1);
+    if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress)))
+      throw ContextError("cannot load OpenGL entry points through GLFW");
+    requireGl45("the window system");
+  }
+  ~GlfwContext() override {
+    glfwDestroyWindow(window_);
+    glfwTerminate();
+  }
+  bool headless() const override { return false; }
+  GLFWwindow* window() const override { return window_; }
+  bool shouldClose() const override { return glfwWindowShouldClose(window_); }
+  void endFrame() override {
+    glfwSwapBuffers(window_);
+    glfwPollEvents();
+  }
+  glm::ivec2 framebufferSize() const override {
+    glm::ivec2 s;
+    glfwGetFramebufferSize(window_, &s.x, &s.y);
+    return s;
+  }
+
+private:
+  GLFWwindow* window_ = nullptr;
+};
+
+}  // namespace
+
+std::unique_ptr<Context> Context::create(const ContextOptions& options) {
+  std::unique_ptr<Context> ctx;
+  if (options.headless)
+    ctx = std::make_unique<EglContext>(options.debug);
+  else
+    ctx = std::make_unique<GlfwContext>(options);
+  if (options.debug) installDebugOutput();
+  return ctx;
+}
+
+std::string Context::renderer() {
+  const GLubyte* r = glGetString(GL_RENDERER);
+  return r ? reinterpret_cast<const char*>(r) : "unknown";
+}
+
+std::vector<std::string> takeGlErrors() {
+  std::lock_guard<std::mutex> lock(g_errorMutex);
+  return std::exchange(g_glErrors, {});
+}
+
+}  // namespace wb

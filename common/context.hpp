@@ -1,0 +1,47 @@
+/// @file context.hpp
+/// An OpenGL 4.5 core context: a GLFW window, or a headless EGL surfaceless context (Mesa
+/// llvmpipe). Both sit behind one interface so labs and tests never care which one they got.
+#pragma once
+#include <glm/vec2.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+
+namespace wb {
+
+/// How to create a context.
+struct ContextOptions {
+  bool headless = false;  ///< EGL surfaceless instead of a window
+  int width = 960;        ///< window width in pixels (ignored when headless)
+  int height = 540;       ///< window height in pixels (ignored when headless)
+  std::string title;      ///< window title
+  bool debug = true;      ///< request a debug context and install the KHR_debug callback
+};
+
+/// A current GL context; destroying it releases the window or EGL display.
+class Context {
+public:
+  /// Creates the context and makes it current; throws wb::ContextError with a hint on failure.
+  static std::unique_ptr<Context> create(const ContextOptions& options);
+  virtual ~Context() = default;
+  /// True for the EGL surfaceless context.
+  virtual bool headless() const = 0;
+  /// The GLFW window, or nullptr when headless.
+  virtual GLFWwindow* window() const { return nullptr; }
+  /// True once the user closed the window (never for headless).
+  virtual bool shouldClose() const { return false; }
+  /// Presents the frame and polls events (no-op when headless).
+  virtual void endFrame() {}
+  /// The default framebuffer's size in pixels ({0,0} when headless).
+  virtual glm::ivec2 framebufferSize() const { return {0, 0}; }
+  /// GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
+  static std::string renderer();
+};
+
+/// GL errors reported through KHR_debug since the last call, oldest first; clears the list.
+std::vector<std::string> takeGlErrors();
+
+}  // namespace wb

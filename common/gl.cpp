@@ -1,0 +1,46 @@
+#include "common/gl.hpp"
+
+#include "common/error.hpp"
+
+#include <string>
+
+namespace wb {
+
+Texture makeTexture2D(GLenum internalFormat, int w, int h, GLenum filter, GLenum wrap) {
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &id);
+  glTextureStorage2D(id, 1, internalFormat, w, h);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, filter);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, filter);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_S, wrap);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_T, wrap);
+  return Texture(id);
+}
+
+Buffer makeBuffer(size_t bytes, const void* data, GLbitfield flags) {
+  GLuint id = 0;
+  glCreateBuffers(1, &id);
+  glNamedBufferStorage(id, GLsizeiptr(bytes), data, flags);
+  return Buffer(id);
+}
+
+Framebuffer makeFramebuffer(std::initializer_list<GLuint> colors, GLuint depth) {
+  GLuint id = 0;
+  glCreateFramebuffers(1, &id);
+  Framebuffer fbo(id);
+  std::vector<GLenum> buffers;
+  for (GLuint c : colors) {
+    const GLenum attachment = GL_COLOR_ATTACHMENT0 + GLenum(buffers.size());
+    glNamedFramebufferTexture(id, attachment, c, 0);
+    buffers.push_back(attachment);
+  }
+  if (buffers.empty()) glNamedFramebufferDrawBuffer(id, GL_NONE);
+  else glNamedFramebufferDrawBuffers(id, GLsizei(buffers.size()), buffers.data());
+  if (depth) glNamedFramebufferTexture(id, GL_DEPTH_ATTACHMENT, depth, 0);
+  const GLenum status = glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE)
+    throw Error("framebuffer incomplete (status 0x" + std::to_string(status) + ")");
+  return fbo;
+}
+
+}  // namespace wb

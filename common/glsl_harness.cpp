@@ -1,0 +1,115 @@
+#include "common/glsl_harness.hpp"
+
+#include "common/error.hpp"
+#include "common/shader.hpp"
+#include "common/variant.hpp"
+
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace wb {
+namespace {
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw Error("cannot read " + p.string());
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// [begin, end) of the chunk of `id`: from the line with its marker to the next marker or the end.
+std::pair<size_t, size_t> chunk(const std::string& text, const std::string& id) {
+  const std::string marker = "// EXERCISE " + id;
+  size_t begin = text.find(marker);
+  if (begin == std::string::npos) throw Error("no '" + marker + "' marker in the exercise file");
+  begin = text.rfind('\n', begin) == std::string::npos ? 0 : text.rfind('\n', begin) + 1;
+  size_t end = text.find("// EXERCISE ", begin + marker.size());
+  end = end == std::string::npos ? text.size() : text.rfind('\n', end) + 1;
+  return {begin, end};
+}
+
+}  // namespace
+
+std::string takeExerciseChunk(const std::string& base, const std::string& donor, const std::string& id) {
+  auto [b0, b1] = chunk(base, id);
+  auto [d0, d1] = chunk(donor, id);
+  return base.substr(0, b0) + donor.substr(d0, d1 - d0) + base.substr(b1);
+}
+
+std::string isolatedExerciseSource(const std::string& file, const std::string& id) {
+  const std::string mine = slurp(findShaderFile(file, shaderSearchPath()));
+  const fs::path solution = fs::path(variant::kSolutionDir) / "shaders" / file;
+  if (*variant::kSolutionDir == '\0' || !fs::exists(solution)) return mine;
+  // Start from the solution and put in only this exercise's chunk: a syntax error elsewhere in the
+  // student's file then costs only the exercise it is in. For a C++ exercise (no chunk here) the
+  // GLSL is all solution, so a GLSL stub never blocks it.
+  if (mine.find("// EXERCISE " + id) == std::string::npos) return slurp(solution);
+  return takeExerciseChunk(slurp(solution), mine, id);
+}
+
+std::vector<glm::vec4> runGlslKernel(const std::string& functions, const fs::path& origin,
+                                     const std::string& body, int count, int stride,
+                                     const std::vector<glm::vec4>& inputs,
+                                     const std::vector<GLuint>& textures) {
+  std::ostringstream src;
+  src << "#version 450 core\n"
+      << "layout(local_size_x = 64) in;\n"
+      << "layout(std430, binding = 0) readonly buffer WbIn { vec4 wb_in[]; };\n"
+      << "layout(std430, binding = 1) writeonly buffer WbOut { vec4 wb_out[]; };\n"
+      << "uniform int wb_count;\n";
+  for (size_t t = 0; t < textures.size(); ++t) src << "uniform sampler2D wb_tex" << t << ";\n";
+  // The functions keep their own source numbers (0 = origin, then its includes) so errors name the
+  // student's file and line; the harness's main() gets the next number.
+  ShaderSource pre = preprocessShader(functions, origin, "", shaderSearchPath());
+  src << "#define IN(k) wb_in[wb_i * " << stride << " + (k)]\n"
+      << "#line 1 0\n" << pre.text << "\n#line 1 " << pre.files.size() << "\n"
+      << "void main() {\n  int wb_i = int(gl_GlobalInvocationID.x);\n  if (wb_i >= wb_count) return;\n"
+      << "  vec4 result = vec4(0.0);\n  " << body << "\n  wb_out[wb_i] = result;\n}\n";
+  pre.files.emplace_back("<harness main>");
+  pre.text = src.str();
+  GLuint sh = glCreateShader(GL_COMPUTE_SHADER);
+  const char* text = pre.text.c_str();
+  glShaderSource(sh, 1, &text, nullptr);
+  glCompileShader(sh);
+  GLint ok = 0;
+  glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    GLint len = 0;
+    glGetShaderiv(sh, GL_INFO_LOG_LENGTH, &len);
+    std::string log(std::max(len, 1), '\0');
+    glGetShaderInfoLog(sh, len, nullptr, log.data());
+    glDeleteShader(sh);
+    throw Error("compile error:\n" + mapShaderLog(log.c_str(), pre.files));
+  }
+  ProgramId prog(glCreateProgram());
+  glAttachShader(prog.id(), sh);
+  glLinkProgram(prog.id());
+  glDeleteShader(sh);
+  glGetProgramiv(prog.id(), GL_LINK_STATUS, &ok);
+  if (!ok) throw Error("link error in the GLSL harness for " + origin.string());
+
+  std::vector<glm::vec4> padded = inputs;
+  padded.resize(std::max<size_t>(inputs.size(), 1));
+  Buffer in = makeBuffer(padded.size() * sizeof(glm::vec4), padded.data(), 0);
+  Buffer out = makeBuffer(size_t(std::max(count, 1)) * sizeof(glm::vec4), nullptr, GL_MAP_READ_BIT);
+  glUseProgram(prog.id());
+  glProgramUniform1i(prog.id(), glGetUniformLocation(prog.id(), "wb_count"), count);
+  for (size_t t = 0; t < textures.size(); ++t) {
+    glBindTextureUnit(GLuint(t), textures[t]);
+    const std::string name = "wb_tex" + std::to_string(t);
+    glProgramUniform1i(prog.id(), glGetUniformLocation(prog.id(), name.c_str()), GLint(t));
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
+  glDispatchCompute(GLuint((count + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<glm::vec4> result(static_cast<size_t>(count));
+  glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(count * sizeof(glm::vec4)), result.data());
+  glUseProgram(0);
+  return result;
+}
+
+}  // namespace wb

@@ -1,0 +1,563 @@
+#include "common/lab.hpp"
+
+#include "common/context.hpp"
+#include "common/glsl_harness.hpp"
+#include "common/image.hpp"
+#include "common/variant.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace wb {
+namespace {
+
+const char* const kUsage =
+    "usage: %s [--headless] [--scene FILE] [--size WxH] [--set key=value]... [--frames N]\n"
+    "          [--screenshot out.png] [--dump-visibility out.pfm] [--bench out.csv] [--list-settings]\n"
+    "  --headless            render without a window (EGL, Mesa llvmpipe); writes a PNG if no output is named\n"
+    "  --scene FILE          scene file (default %s)\n"
+    "  --size WxH            frame size in pixels (default 960x540)\n"
+    "  --set key=value       change a setting; --list-settings shows them all\n"
+    "  --frames N            frames to render before writing outputs and exiting\n"
+    "  --screenshot F.png    write the final frame as PNG\n"
+    "  --dump-visibility F   write per-pixel light visibility (1 lit, 0 shadowed) as a float PFM\n"
+    "  --bench F.csv         time every pass (GPU ms) and the frame (wall ms) over the frames\n";
+
+const int kMapSizes[] = {512, 1024, 2048, 4096, 8192};
+
+struct Options {
+  bool headless = false, listSettings = false;
+  std::string scene, screenshot, visibility, bench;
+  glm::ivec2 size{960, 540};
+  int frames = -1;  // -1: until the window closes (headless: 1, bench: 60)
+};
+
+struct PassStats {
+  double last = 0, sum = 0, min = 1e30, max = 0;
+  int count = 0;
+};
+
+std::string readText(const fs::path& p) {
+  std::ifstream in(p);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+struct Lab::Impl {
+  Options opt;
+  std::unique_ptr<Context> ctx;
+  Framebuffer fbo;
+  Texture color, visibility, depth;
+  std::unique_ptr<Program> lines, inset;
+  VertexArray emptyVao;
+  // GPU timers: queries in flight, a pool of free ones, and per-pass statistics.
+  std::vector<std::pair<std::string, GLuint>> pending;
+  std::vector<GLuint> freeQueries;
+  std::vector<std::pair<std::string, PassStats>> passes;
+  std::string activePass;
+  // GLSL exercise probes: id, file, expression; and the file times they were last run against.
+  struct Probe { std::string id, file, expr; };
+  std::vector<Probe> probes;
+  std::map<fs::path, fs::file_time_type> probedFiles;
+  bool strictGl = false, imgui = false, screenshotRequested = false;
+  std::string lastScreenshot;
+  int frameIndex = 0, warmup = 0;
+  double wallSum = 0;
+  int wallCount = 0;
+  glm::dvec2 lastMouse{0};
+  bool keyDown[GLFW_KEY_LAST + 1] = {};
+
+  PassStats& stats(const std::string& name) {
+    for (auto& [n, s] : passes)
+      if (n == name) return s;
+    passes.emplace_back(name, PassStats{});
+    return passes.back().second;
+  }
+  // Collects finished timer queries; `wait` blocks until all are done (headless frames).
+  void collect(bool wait, bool record) {
+    for (auto it = pending.begin(); it != pending.end();) {
+      GLint ready = 0;
+      if (!wait) glGetQueryObjectiv(it->second, GL_QUERY_RESULT_AVAILABLE, &ready);
+      if (!wait && !ready) { ++it; continue; }
+      GLuint64 ns = 0;
+      glGetQueryObjectui64v(it->second, GL_QUERY_RESULT, &ns);
+      PassStats& s = stats(it->first);
+      s.last = ns * 1e-6;
+      if (record) {
+        s.sum += s.last, ++s.count;
+        s.min = std::min(s.min, s.last), s.max = std::max(s.max, s.last);
+      }
+      freeQueries.push_back(it->second);
+      it = pending.erase(it);
+    }
+  }
+  // True once per key press (edge), so holding a key does not repeat.
+  bool pressed(GLFWwindow* w, int key) {
+    bool down = glfwGetKey(w, key) == GLFW_PRESS, was = keyDown[key];
+    keyDown[key] = down;
+    return down && !was;
+  }
+};
+
+Lab::Lab(std::string defaultScene) : impl_(std::make_unique<Impl>()), defaultScene_(std::move(defaultScene)) {
+  // The manifest is the one list of this lab's exercises (also used by the tests and grading).
+  const fs::path manifest = fs::path(variant::kLabDir) / "exercises.json";
+  try {
+    auto j = nlohmann::json::parse(readText(manifest));
+    number_ = j.at("lab").get<std::string>().substr(0, 2);
+    title_ = j.at("title").get<std::string>();
+    for (const auto& e : j.at("exercises")) exercises_.push_back({e.at("id"), e.at("title"), {}, {}});
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "warning: cannot read %s (%s); the exercise list will be empty\n",
+                 manifest.string().c_str(), e.what());
+  }
+  std::vector<std::string> sizes;
+  for (int s : kMapSizes) sizes.push_back(std::to_string(s));
+  settings.addChoice("shadow.map_size", mapSizeChoice_, sizes, "shadow map resolution in texels (clamped to GL_MAX_TEXTURE_SIZE)");
+  settings.add("shadow.bias", bias_, 0.0f, 0.05f, "constant depth bias subtracted from the receiver depth");
+  settings.add("light.index", lightIndex, 0, 7, "which light of the scene casts shadows");
+  settings.addChoice("debug.view", debugView_, {"camera", "light"}, "see the scene from the camera or from the light");
+  settings.add("debug.shadow_map", showMap_, "show the shadow map (linearised for perspective lights) in a corner");
+  settings.add("debug.frustum", showFrustum_, "draw the light's frustum in the scene");
+  settings.add("camera.bookmark", bookmark_, 0, 8, "camera bookmark from the scene file (keys 1-9)");
+}
+
+Lab::~Lab() {
+  if (impl_->imgui) {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+  programs_.clear();
+  gpuScene.reset();
+  if (impl_->ctx) {
+    for (GLuint q : impl_->freeQueries) glDeleteQueries(1, &q);
+    for (auto& p : impl_->pending) glDeleteQueries(1, &p.second);
+  }
+  Impl* i = impl_.get();
+  i->fbo.reset(), i->color.reset(), i->visibility.reset(), i->depth.reset();
+  i->lines.reset(), i->inset.reset(), i->emptyVao.reset();
+  i->ctx.reset();
+}
+
+Program& Lab::loadProgram(std::vector<ShaderStage> stages, std::string defines) {
+  programs_.push_back(Program::tryLoad(std::move(stages), std::move(defines)));
+  return programs_.back();
+}
+
+void Lab::glslExercise(const std::string& id, const std::string& file, const std::string& probe) {
+  impl_->probes.push_back({id, file, probe});
+}
+
+void Lab::setStatus(const std::string& id, ExerciseState state, const std::string& message) {
+  for (auto& e : exercises_)
+    if (e.id == id) e.state = state, e.message = message;
+}
+
+void Lab::warn(const std::string& message) {
+  if (std::find(warnings_.begin(), warnings_.end(), message) != warnings_.end()) return;
+  warnings_.push_back(message);
+  std::fprintf(stderr, "warning: %s\n", message.c_str());
+}
+
+int Lab::shadowMapSize() {
+  GLint maxSize = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+  const int wanted = kMapSizes[mapSizeChoice_];
+  if (wanted > maxSize) {
+    warn("shadow.map_size " + std::to_string(wanted) + " exceeds GL_MAX_TEXTURE_SIZE; using " +
+         std::to_string(maxSize));
+    return maxSize;
+  }
+  return wanted;
+}
+
+glm::mat4 Lab::viewProj() const {
+  if (debugView_ == 1 && light_.depthMap) return light_.viewProj;
+  return camera.projection(float(frameSize_.x) / float(frameSize_.y)) * camera.view();
+}
+
+glm::vec3 Lab::viewPosition() const {
+  if (debugView_ == 1 && light_.depthMap) {
+    glm::vec4 p = glm::inverse(light_.viewProj) * glm::vec4(0, 0, -1, 1);
+    return glm::vec3(p) / p.w;
+  }
+  return camera.eye();
+}
+
+void Lab::bindFrameTarget() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, impl_->fbo.id());
+  glViewport(0, 0, frameSize_.x, frameSize_.y);
+}
+
+Lab::PassTimer::PassTimer(Lab& lab, const char* name) : lab_(lab) {
+  auto& i = *lab.impl_;
+  GLuint q = 0;
+  if (i.freeQueries.empty()) glGenQueries(1, &q);
+  else q = i.freeQueries.back(), i.freeQueries.pop_back();
+  i.pending.emplace_back(name, q);
+  glBeginQuery(GL_TIME_ELAPSED, q);
+}
+
+Lab::PassTimer::~PassTimer() { glEndQuery(GL_TIME_ELAPSED); }
+
+void Lab::probeGlslExercises() {
+  auto& i = *impl_;
+  std::map<std::string, std::vector<const Impl::Probe*>> byFile;
+  for (const auto& p : i.probes) byFile[p.file].push_back(&p);
+  Texture dummy = makeTexture2D(GL_R32F, 1, 1);
+  for (const auto& [file, probes] : byFile) {
+    std::string body;
+    for (size_t k = 0; k < probes.size(); ++k)
+      body += "if (wb_i == " + std::to_string(k) + ") result.x = float(" + probes[k]->expr + ");\n  ";
+    try {
+      const fs::path path = findShaderFile(file, shaderSearchPath());
+      i.probedFiles[path] = fs::last_write_time(path);
+      auto r = runGlslKernel(readText(path), path, body, int(probes.size()), 1, {}, {dummy.id()});
+      for (size_t k = 0; k < probes.size(); ++k)
+        setStatus(probes[k]->id, isTodo(r[k].x) ? ExerciseState::NotImplemented : ExerciseState::Implemented,
+                  isTodo(r[k].x) ? "the GLSL function still returns WB_TODO" : "");
+    } catch (const Error& e) {
+      for (const auto* p : probes) setStatus(p->id, ExerciseState::Failed, e.what());
+    }
+  }
+}
+
+int Lab::main(int argc, char** argv) {
+  auto& i = *impl_;
+  const std::string exe = fs::path(argv[0]).filename().string();
+  try {
+    // ---- Command line: everything is checked before a GL context exists. ----
+    std::vector<std::string> sets;
+    for (int a = 1; a < argc; ++a) {
+      std::string arg = argv[a];
+      auto value = [&]() -> std::string {
+        if (a + 1 >= argc) throw UsageError(arg + " needs a value; see --help");
+        return argv[++a];
+      };
+      if (arg == "--help" || arg == "-h") {
+        std::printf(kUsage, exe.c_str(), defaultScene_.c_str());
+        return 0;
+      } else if (arg == "--headless") i.opt.headless = true;
+      else if (arg == "--list-settings") i.opt.listSettings = true;
+      else if (arg == "--scene") i.opt.scene = value();
+      else if (arg == "--set") sets.push_back(value());
+      else if (arg == "--screenshot") i.opt.screenshot = value();
+      else if (arg == "--dump-visibility") i.opt.visibility = value();
+      else if (arg == "--bench") i.opt.bench = value();
+      else if (arg == "--size") {
+        std::string v = value();
+        char x = 0, extra = 0;
+        std::istringstream in(v);
+        if (!(in >> i.opt.size.x >> x >> i.opt.size.y) || x != 'x' || in >> extra || i.opt.size.x < 16 ||
+            i.opt.size.y < 16 || i.opt.size.x > 8192 || i.opt.size.y > 8192)
+          throw UsageError("bad --size '" + v + "': expected WxH between 16x16 and 8192x8192, e.g. 960x540");
+      } else if (arg == "--frames") {
+        std::string v = value();
+        try {
+          size_t used = 0;
+          i.opt.frames = std::stoi(v, &used);
+          if (used != v.size() || i.opt.frames < 1) throw 0;
+        } catch (...) {
+          throw UsageError("bad --frames '" + v + "': expected a whole number of at least 1");
+        }
+      } else
+        throw UsageError("unknown option '" + arg + "'; accepted: --headless --scene --size --set --frames "
+                         "--screenshot --dump-visibility --bench --list-settings --help");
+    }
+    for (const auto& s : sets) settings.assign(s);
+    if (i.opt.listSettings) {
+      std::printf("settings of lab %s (%s):\n", number_.c_str(), title_.c_str());
+      settings.list(std::cout);
+      return 0;
+    }
+    const fs::path scenePath = i.opt.scene.empty() ? fs::path(variant::kSourceDir) / defaultScene_ : fs::path(i.opt.scene);
+    scene = Scene::load(scenePath);
+    if (lightIndex >= int(scene.lights.size()))
+      throw UsageError("light.index=" + std::to_string(lightIndex) + " but " + scenePath.string() + " has " +
+                       std::to_string(scene.lights.size()) + " light(s)");
+    camera.pose = scene.cameras[std::min<size_t>(bookmark_, scene.cameras.size() - 1)];
+    const bool writeSomething = !i.opt.screenshot.empty() || !i.opt.visibility.empty() || !i.opt.bench.empty();
+    if (i.opt.headless && !writeSomething) i.opt.screenshot = "lab" + number_ + ".png";
+    if (i.opt.frames < 0 && (i.opt.headless || !i.opt.bench.empty())) i.opt.frames = i.opt.bench.empty() ? 1 : 60;
+    i.warmup = i.opt.bench.empty() ? 0 : std::min(10, i.opt.frames / 4);
+    frameSize_ = i.opt.size;
+
+    // ---- Context, frame target, shared debug programs, scene, then the lab's own init(). ----
+    const char* strict = std::getenv("WB_STRICT_GL");
+#ifndef NDEBUG
+    i.strictGl = true;
+#endif
+    if (strict) i.strictGl = std::string(strict) != "0";
+    i.ctx = Context::create({i.opt.headless, i.opt.size.x, i.opt.size.y, "Lab " + number_ + ": " + title_, true});
+    if (!i.opt.bench.empty() && !i.opt.headless) glfwSwapInterval(0);  // measure, do not wait for vsync
+    GLuint vao = 0;
+    glCreateVertexArrays(1, &vao);
+    i.emptyVao = VertexArray(vao);
+    i.lines = std::make_unique<Program>(std::vector<ShaderStage>{{GL_VERTEX_SHADER, "wb/frustum.vert"},
+                                                                 {GL_FRAGMENT_SHADER, "wb/flat.frag"}});
+    i.inset = std::make_unique<Program>(std::vector<ShaderStage>{{GL_VERTEX_SHADER, "wb/fullscreen.vert"},
+                                                                 {GL_FRAGMENT_SHADER, "wb/depth_view.frag"}});
+    gpuScene = std::make_unique<GpuScene>(scene);
+    if (!i.ctx->headless()) {
+      IMGUI_CHECKVERSION();
+      ImGui::CreateContext();
+      ImGui::GetIO().IniFilename = nullptr;
+      ImGui_ImplGlfw_InitForOpenGL(i.ctx->window(), true);
+      ImGui_ImplOpenGL3_Init("#version 450 core");
+      i.imgui = true;
+    }
+    init();
+    probeGlslExercises();
+
+    // ---- The frame loop. ----
+    auto last = std::chrono::steady_clock::now();
+    while (!i.ctx->shouldClose() && (i.opt.frames < 0 || i.frameIndex < i.opt.frames)) {
+      auto now = std::chrono::steady_clock::now();
+      float dt = i.opt.headless ? 1.0f / 60 : std::chrono::duration<float>(now - last).count();
+      last = now;
+      frame(dt);
+      if (!i.opt.bench.empty() || i.opt.headless) glFinish();
+      auto end = std::chrono::steady_clock::now();
+      const bool record = i.frameIndex >= i.warmup;
+      if (record && i.frameIndex > 0) i.wallSum += std::chrono::duration<double, std::milli>(end - now).count(), ++i.wallCount;
+      i.collect(i.ctx->headless(), record);
+      for (const auto& e : takeGlErrors()) {
+        if (i.strictGl) throw Error("OpenGL error: " + e);
+        warn("OpenGL error: " + e);
+      }
+      ++i.frameIndex;
+    }
+    writeOutputs();
+    for (const auto& e : exercises_)
+      if (e.state == ExerciseState::NotImplemented || e.state == ExerciseState::Failed)
+        std::fprintf(stderr, "Exercise %s (%s) is %s: %s\n", e.id.c_str(), e.title.c_str(),
+                     e.state == ExerciseState::Failed ? "failing" : "not implemented yet", e.message.c_str());
+    return 0;
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "%s: %s\n", exe.c_str(), e.what());
+    return 2;
+  } catch (const ContextError& e) {
+    std::fprintf(stderr, "%s: %s\n", exe.c_str(), e.what());
+    return 3;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: %s\n", exe.c_str(), e.what());
+    return 1;
+  }
+}
+
+void Lab::frame(float dt) {
+  auto& i = *impl_;
+  GLFWwindow* win = i.ctx->window();
+  if (i.imgui) {
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    const ImGuiIO& io = ImGui::GetIO();
+    glm::dvec2 mouse;
+    glfwGetCursorPos(win, &mouse.x, &mouse.y);
+    if (!io.WantCaptureMouse) {  // never steal the mouse from a widget
+      if (glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS)
+        camera.orbit(float(mouse.x - i.lastMouse.x), float(mouse.y - i.lastMouse.y));
+      camera.zoom(io.MouseWheel);
+    }
+    i.lastMouse = mouse;
+    if (!io.WantCaptureKeyboard) {
+      for (int k = 0; k < 9; ++k)
+        if (i.pressed(win, GLFW_KEY_1 + k) && k < int(scene.cameras.size())) bookmark_ = k, camera.pose = scene.cameras[k];
+      if (i.pressed(win, GLFW_KEY_F12) || i.pressed(win, GLFW_KEY_P)) i.screenshotRequested = true;
+    }
+    frameSize_ = glm::max(i.ctx->framebufferSize(), glm::ivec2(16));
+  }
+
+  // Hot reload: a changed file rebuilds its programs; a failed build keeps the last good program.
+  if (i.frameIndex % 15 == 0) {
+    for (auto& p : programs_) p.reloadIfChanged();
+    for (const auto& [file, time] : i.probedFiles) {
+      std::error_code ec;
+      if (fs::last_write_time(file, ec) != time) {
+        probeGlslExercises();
+        break;
+      }
+    }
+  }
+  update(dt);
+
+  // The offscreen frame target follows the window; its visibility attachment is cleared to "lit".
+  if (!i.fbo.id() || i.color.id() == 0 || frameSize_ != i.opt.size) {
+    i.opt.size = frameSize_;
+    i.color = makeTexture2D(GL_RGBA8, frameSize_.x, frameSize_.y);
+    i.visibility = makeTexture2D(GL_R32F, frameSize_.x, frameSize_.y);
+    i.depth = makeTexture2D(GL_DEPTH_COMPONENT24, frameSize_.x, frameSize_.y);
+    i.fbo = makeFramebuffer({i.color.id(), i.visibility.id()}, i.depth.id());
+  }
+  bindFrameTarget();
+  const float sky[4] = {0.55f, 0.65f, 0.78f, 1}, lit = 1;
+  glClearBufferfv(GL_COLOR, 0, sky);
+  glClearBufferfv(GL_COLOR, 1, &lit);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+
+  bool programsOk = std::all_of(programs_.begin(), programs_.end(), [](const Program& p) { return p.ok(); });
+  if (programsOk) {
+    render();
+  } else if (i.ctx->headless()) {
+    for (const auto& p : programs_)
+      if (!p.ok()) throw Error(p.error());
+  }
+
+  // Shared debug views, drawn into the frame target so screenshots and headless runs show them.
+  bindFrameTarget();
+  glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // overlays never touch visibility
+  glBindVertexArray(i.emptyVao.id());
+  if (showFrustum_ && light_.depthMap) {
+    i.lines->use();
+    i.lines->set("u_viewProj", viewProj());
+    i.lines->set("u_invLight", glm::inverse(light_.viewProj));
+    i.lines->set("u_color", glm::vec3(1, 0.85f, 0.1f));
+    glDrawArrays(GL_LINES, 0, 24);
+  }
+  if (showMap_ && light_.depthMap) {
+    const int s = frameSize_.y / 3;
+    glViewport(frameSize_.x - s - 8, 8, s, s);
+    glDisable(GL_DEPTH_TEST);
+    i.inset->use();
+    i.inset->set("u_perspective", light_.perspective ? 1 : 0);
+    i.inset->set("u_near", light_.nearPlane);
+    i.inset->set("u_far", light_.farPlane);
+    glBindTextureUnit(0, light_.depthMap);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glEnable(GL_DEPTH_TEST);
+  }
+  glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+
+  if (i.imgui) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, i.fbo.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, frameSize_.x, frameSize_.y, 0, 0, frameSize_.x, frameSize_.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, frameSize_.x, frameSize_.y);
+    drawShell();
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (i.screenshotRequested) {  // the window as the user sees it, UI included
+      i.screenshotRequested = false;
+      std::vector<uint8_t> px(size_t(frameSize_.x) * frameSize_.y * 4);
+      glReadPixels(0, 0, frameSize_.x, frameSize_.y, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
+      char stamp[32];
+      std::time_t t = std::time(nullptr);
+      std::strftime(stamp, sizeof stamp, "%Y%m%d_%H%M%S", std::localtime(&t));
+      i.lastScreenshot = "screenshots/lab" + number_ + "_" + stamp + ".png";
+      writePng(i.lastScreenshot, frameSize_.x, frameSize_.y, px);
+      std::printf("screenshot: %s\n", fs::absolute(i.lastScreenshot).string().c_str());
+    }
+    i.ctx->endFrame();
+  }
+}
+
+void Lab::drawShell() {
+  auto& i = *impl_;
+  const ImVec4 red(1, 0.4f, 0.4f, 1), green(0.5f, 1, 0.5f, 1), yellow(1, 0.85f, 0.3f, 1), grey(0.7f, 0.7f, 0.7f, 1);
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(400, 0), ImGuiCond_FirstUseEver);
+  ImGui::Begin(("Lab " + number_ + ": " + title_).c_str());
+  ImGui::TextColored(grey, "%s | %.1f fps | %dx%d", Context::renderer().c_str(), ImGui::GetIO().Framerate, frameSize_.x, frameSize_.y);
+  ImGui::Separator();
+  ImGui::Text("Exercises (run ./workbook check %s to grade them)", number_.c_str());
+  for (const auto& e : exercises_) {
+    const char* label = "not run yet";
+    ImVec4 c = grey;
+    switch (e.state) {
+      case ExerciseState::Implemented: label = "done", c = green; break;
+      case ExerciseState::NotImplemented: label = "not implemented", c = yellow; break;
+      case ExerciseState::Failed: label = "error", c = red; break;
+      case ExerciseState::Unknown: break;
+    }
+    ImGui::TextColored(c, "%s  %-16s %s", e.id.c_str(), label, e.title.c_str());
+    if (!e.message.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.message.c_str());
+    if (e.state == ExerciseState::Failed) ImGui::TextWrapped("    %s", e.message.c_str());
+  }
+  if (!i.passes.empty()) {
+    ImGui::Separator();
+    ImGui::Text("GPU time per pass");
+    for (const auto& [name, s] : i.passes) ImGui::Text("  %-12s %7.3f ms", name.c_str(), s.last);
+  }
+  for (const auto& p : programs_)
+    if (!p.error().empty()) {
+      ImGui::Separator();
+      ImGui::TextColored(red, "Shader error (the last good version is still running):");
+      ImGui::TextWrapped("%s", p.error().c_str());
+    }
+  for (const auto& w : warnings_) ImGui::TextColored(yellow, "warning: %s", w.c_str());
+  if (!i.lastScreenshot.empty()) ImGui::TextColored(grey, "saved %s", i.lastScreenshot.c_str());
+  ImGui::TextColored(grey, "drag: orbit | wheel: zoom | 1-9: bookmarks | F12: screenshot");
+  ImGui::End();
+
+  ImGui::SetNextWindowPos(ImVec2(float(frameSize_.x) - 368, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Settings");
+  const int oldBookmark = bookmark_;
+  settings.ui();
+  if (bookmark_ != oldBookmark && bookmark_ < int(scene.cameras.size())) camera.pose = scene.cameras[bookmark_];
+  lightIndex = std::min(lightIndex, int(scene.lights.size()) - 1);
+  ui();
+  ImGui::End();
+}
+
+void Lab::writeOutputs() {
+  auto& i = *impl_;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, i.fbo.id());
+  const int w = frameSize_.x, h = frameSize_.y;
+  if (!i.opt.screenshot.empty()) {
+    std::vector<uint8_t> px(size_t(w) * h * 4);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
+    writePng(i.opt.screenshot, w, h, px);
+    std::printf("wrote %s\n", fs::absolute(i.opt.screenshot).string().c_str());
+  }
+  if (!i.opt.visibility.empty()) {
+    FloatImage img{w, h, std::vector<float>(size_t(w) * h)};
+    glReadBuffer(GL_COLOR_ATTACHMENT1);
+    glReadPixels(0, 0, w, h, GL_RED, GL_FLOAT, img.pixels.data());
+    writePfm(i.opt.visibility, img);
+    std::printf("wrote %s\n", fs::absolute(i.opt.visibility).string().c_str());
+  }
+  if (!i.opt.bench.empty()) {
+    std::ofstream csv(i.opt.bench);
+    if (!csv) throw UsageError("cannot write --bench file '" + i.opt.bench + "'");
+    const double frameMs = i.wallCount ? i.wallSum / i.wallCount : 0;
+    csv << "lab,renderer,size,pass,gpu_ms_mean,gpu_ms_min,gpu_ms_max,frames\n";
+    std::printf("lab %s on %s, %dx%d, %d frames measured after %d warm-up\n", number_.c_str(),
+                Context::renderer().c_str(), w, h, i.wallCount, i.warmup);
+    std::printf("  %-14s %10s %10s %10s\n", "pass", "mean ms", "min ms", "max ms");
+    for (const auto& [name, s] : i.passes) {
+      const double mean = s.count ? s.sum / s.count : 0;
+      csv << "lab" << number_ << ",\"" << Context::renderer() << "\"," << w << "x" << h << "," << name << ","
+          << mean << "," << s.min << "," << s.max << "," << s.count << "\n";
+      std::printf("  %-14s %10.3f %10.3f %10.3f\n", name.c_str(), mean, s.min, s.max);
+    }
+    csv << "lab" << number_ << ",\"" << Context::renderer() << "\"," << w << "x" << h << ",frame_wall,"
+        << frameMs << ",,," << i.wallCount << "\n";
+    std::printf("  %-14s %10.3f   => %.1f fps\nwrote %s\n", "frame (wall)", frameMs, frameMs > 0 ? 1000 / frameMs : 0.0,
+                fs::absolute(i.opt.bench).string().c_str());
+  }
+}
+
+}  // namespace wb

@@ -1,0 +1,223 @@
+#include "common/scene.hpp"
+
+#include "common/error.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+#include <stb_image.h>
+
+#include <fstream>
+#include <map>
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace wb {
+namespace {
+
+// Reads fields of one JSON object and names the file and field in every error.
+class Fields {
+public:
+  Fields(const json& j, std::string where, const fs::path& file) : j_(j), where_(std::move(where)), file_(file) {
+    if (!j_.is_object()) fail("", "must be an object {...}");
+  }
+  [[noreturn]] void fail(const std::string& field, const std::string& why) const {
+    throw UsageError(file_.string() + ": " + where_ + (field.empty() ? "" : "." + field) + ": " + why);
+  }
+  bool has(const char* k) const { return j_.contains(k); }
+  float num(const char* k, float fallback) const {
+    if (!has(k)) return fallback;
+    if (!j_[k].is_number()) fail(k, "must be a number, got " + j_[k].dump());
+    return j_[k].get<float>();
+  }
+  float positive(const char* k, float fallback) const {
+    float v = num(k, fallback);
+    if (!(v > 0)) fail(k, "must be greater than 0, got " + std::to_string(v));
+    return v;
+  }
+  std::string str(const char* k, const std::string& fallback) const {
+    if (!has(k)) return fallback;
+    if (!j_[k].is_string()) fail(k, "must be a string, got " + j_[k].dump());
+    return j_[k].get<std::string>();
+  }
+  glm::vec3 vec3(const char* k, glm::vec3 fallback) const {
+    if (!has(k)) return fallback;
+    const json& v = j_[k];
+    if (v.is_number()) return glm::vec3(v.get<float>());
+    if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
+      fail(k, "must be [x, y, z] (three numbers), got " + v.dump());
+    return {v[0].get<float>(), v[1].get<float>(), v[2].get<float>()};
+  }
+  glm::vec3 direction(const char* k, glm::vec3 fallback) const {
+    glm::vec3 d = vec3(k, fallback);
+    if (glm::length(d) < 1e-6f) fail(k, "must not be the zero vector");
+    return glm::normalize(d);
+  }
+
+private:
+  const json& j_;
+  std::string where_;
+  const fs::path& file_;
+};
+
+const json& arrayField(const json& root, const char* k, const fs::path& file, bool required) {
+  static const json empty = json::array();
+  if (!root.contains(k)) {
+    if (required) throw UsageError(file.string() + ": " + k + ": missing (a scene needs at least one)");
+    return empty;
+  }
+  if (!root[k].is_array()) throw UsageError(file.string() + ": " + k + ": must be an array [...]");
+  return root[k];
+}
+
+MeshData shapeMesh(const std::string& shape, const Fields& f) {
+  if (shape == "plane") {
+    glm::vec3 s = f.vec3("size", {10, 0, 10});
+    return makePlane(s.x, s.z);
+  }
+  if (shape == "box") return makeBox(f.vec3("size", glm::vec3(1)) * 0.5f);
+  if (shape == "sphere") return makeSphere(f.positive("radius", 0.5f));
+  if (shape == "cylinder") return makeCylinder(f.positive("radius", 0.5f), f.positive("height", 1));
+  if (shape == "torus") return makeTorus(f.positive("radius", 0.6f), f.positive("tube", 0.2f));
+  if (shape == "bench") return makeBench();
+  if (shape == "tree_trunk") return makeTreeTrunk();
+  if (shape == "tree_canopy") return makeTreeCanopy();
+  f.fail("shape", "unknown shape '" + shape +
+                      "' (expected plane, box, sphere, cylinder, torus, bench or tree)");
+}
+
+}  // namespace
+
+Scene Scene::load(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in)
+    throw UsageError("scene file '" + file.string() + "' not found (scenes live in " +
+                     "scenes/*.json; try --scene scenes/depth_map.json)");
+  json root;
+  try {
+    root = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw UsageError(file.string() + ": not valid JSON: " + e.what());
+  }
+  if (!root.is_object()) throw UsageError(file.string() + ": the top level must be an object {...}");
+  Scene scene;
+  scene.path = fs::absolute(file);
+  const fs::path dir = scene.path.parent_path();
+
+  const json& objects = arrayField(root, "objects", file, true);
+  for (size_t i = 0; i < objects.size(); ++i) {
+    Fields f(objects[i], "objects[" + std::to_string(i) + "]", file);
+    const std::string shape = f.str("shape", "");
+    if (shape.empty()) f.fail("shape", "missing (expected plane, box, sphere, cylinder, torus, bench or tree)");
+    glm::mat4 model = glm::translate(glm::mat4(1), f.vec3("position", glm::vec3(0)));
+    const glm::vec3 rot = f.vec3("rotation", glm::vec3(0));  // degrees, applied y, then x, then z
+    model = glm::rotate(model, glm::radians(rot.y), {0, 1, 0});
+    model = glm::rotate(model, glm::radians(rot.x), {1, 0, 0});
+    model = glm::rotate(model, glm::radians(rot.z), {0, 0, 1});
+    model = glm::scale(model, f.vec3("scale", glm::vec3(1)));
+    Material mat{f.vec3("color", glm::vec3(0.8f)), {}};
+    if (std::string tex = f.str("texture", ""); !tex.empty()) {
+      mat.texture = dir / tex;
+      if (!fs::exists(mat.texture)) f.fail("texture", "file '" + mat.texture.string() + "' not found");
+    }
+    const std::string name = f.str("name", "objects[" + std::to_string(i) + "]");
+    if (shape == "tree") {  // a composite: an opaque trunk and an alpha-tested canopy
+      const fs::path leaves = mat.texture.empty() ? dir / "textures/leaves.png" : mat.texture;
+      scene.objects.push_back({name + ".trunk", makeTreeTrunk(), model, {{0.45f, 0.3f, 0.18f}, {}}});
+      scene.objects.push_back({name + ".canopy", makeTreeCanopy(), model, {mat.color, leaves}});
+      continue;
+    }
+    scene.objects.push_back({name, shapeMesh(shape, f), model, mat});
+  }
+
+  const json& lights = arrayField(root, "lights", file, true);
+  static const std::map<std::string, LightType> kTypes = {
+      {"directional", LightType::Directional}, {"spot", LightType::Spot}, {"point", LightType::Point}};
+  for (size_t i = 0; i < lights.size(); ++i) {
+    Fields f(lights[i], "lights[" + std::to_string(i) + "]", file);
+    Light l;
+    const std::string type = f.str("type", "directional");
+    if (!kTypes.count(type)) f.fail("type", "unknown light type '" + type + "' (expected directional, spot or point)");
+    l.type = kTypes.at(type);
+    l.position = f.vec3("position", l.position);
+    l.direction = f.direction("direction", l.direction);
+    l.color = f.vec3("color", l.color);
+    l.angle = f.positive("angle", l.angle);
+    if (l.angle >= 89) f.fail("angle", "a spot cone half-angle must be below 89 degrees");
+    l.nearPlane = f.positive("near", l.nearPlane);
+    l.farPlane = f.positive("far", l.farPlane);
+    if (l.farPlane <= l.nearPlane) f.fail("far", "must be greater than near");
+    scene.lights.push_back(l);
+  }
+
+  for (const json& c : arrayField(root, "cameras", file, false)) {
+    Fields f(c, "cameras[" + std::to_string(scene.cameras.size()) + "]", file);
+    CameraBookmark b;
+    b.name = f.str("name", "camera " + std::to_string(scene.cameras.size() + 1));
+    b.target = f.vec3("target", b.target);
+    b.distance = f.positive("distance", b.distance);
+    b.yaw = f.num("yaw", b.yaw);
+    b.pitch = f.num("pitch", b.pitch);
+    b.fov = f.positive("fov", b.fov);
+    scene.cameras.push_back(b);
+  }
+  if (scene.cameras.empty()) scene.cameras.emplace_back();
+
+  scene.boundsMin = glm::vec3(1e30f);
+  scene.boundsMax = glm::vec3(-1e30f);
+  for (const auto& o : scene.objects)
+    for (const auto& v : o.mesh.vertices) {
+      glm::vec3 p(o.model * glm::vec4(v.position, 1));
+      scene.boundsMin = glm::min(scene.boundsMin, p);
+      scene.boundsMax = glm::max(scene.boundsMax, p);
+    }
+  return scene;
+}
+
+GpuScene::GpuScene(const Scene& scene) {
+  const uint8_t whiteTexel[4] = {255, 255, 255, 255};
+  white_ = makeTexture2D(GL_RGBA8, 1, 1);
+  glTextureSubImage2D(white_.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, whiteTexel);
+  std::map<fs::path, GLuint> loaded;
+  for (const auto& o : scene.objects) {
+    GLuint tex = white_.id();
+    if (!o.material.texture.empty()) {
+      auto it = loaded.find(o.material.texture);
+      if (it == loaded.end()) {
+        int w = 0, h = 0, n = 0;
+        stbi_set_flip_vertically_on_load(1);
+        unsigned char* px = stbi_load(o.material.texture.string().c_str(), &w, &h, &n, 4);
+        if (!px)
+          throw UsageError(scene.path.string() + ": " + o.name + ": cannot load texture '" +
+                           o.material.texture.string() + "': " + stbi_failure_reason());
+        GLuint id = 0;
+        glCreateTextures(GL_TEXTURE_2D, 1, &id);
+        const int levels = 1 + static_cast<int>(std::log2(std::max(w, h)));
+        glTextureStorage2D(id, levels, GL_RGBA8, w, h);
+        glTextureSubImage2D(id, 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, px);
+        glGenerateTextureMipmap(id);
+        glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        stbi_image_free(px);
+        textures_.emplace_back(id);
+        it = loaded.emplace(o.material.texture, id).first;
+      }
+      tex = it->second;
+    }
+    items_.push_back({Mesh(o.mesh), o.model, o.material.color, tex, tex != white_.id()});
+  }
+}
+
+void GpuScene::draw(const Program& program, int unit) const {
+  program.use();
+  program.set("u_albedo", unit);
+  for (const auto& it : items_) {
+    program.set("u_model", it.model);
+    program.set("u_color", it.color);
+    program.set("u_hasTexture", it.textured ? 1 : 0);
+    glBindTextureUnit(unit, it.texture);
+    it.mesh.draw();
+  }
+}
+
+}  // namespace wb

@@ -1,0 +1,80 @@
+/// @file scene.hpp
+/// Scene files (scenes/*.json): primitives with transforms and materials, lights and camera
+/// bookmarks. Loading is CPU-only and testable; GpuScene uploads and draws a loaded scene.
+#pragma once
+#include "common/camera.hpp"
+#include "common/mesh.hpp"
+#include "common/shader.hpp"
+
+#include <glm/glm.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace wb {
+
+/// Surface appearance: a colour and an optional RGBA texture whose alpha is alpha-tested.
+struct Material {
+  glm::vec3 color{0.8f};              ///< albedo (multiplies the texture)
+  std::filesystem::path texture;      ///< absolute path, or empty for none
+};
+
+/// One object: its geometry already in object space, a model matrix and a material.
+struct SceneObject {
+  std::string name;    ///< from the file, or "objects[i]"
+  MeshData mesh;       ///< object-space geometry
+  glm::mat4 model{1};  ///< object → world
+  Material material;   ///< appearance
+};
+
+/// The kinds of light a scene can hold.
+enum class LightType { Directional, Spot, Point };
+
+/// A light. Directional lights use `direction`; spot lights use all fields; point lights ignore
+/// `direction` and `angle`.
+struct Light {
+  LightType type = LightType::Directional;  ///< kind of light
+  glm::vec3 position{0, 10, 0};             ///< world position (spot, point)
+  glm::vec3 direction{0, -1, 0};            ///< unit direction the light travels
+  glm::vec3 color{1};                       ///< radiance scale
+  float angle = 30;                         ///< spot: half-angle of the cone in degrees
+  float nearPlane = 0.5f;                   ///< spot/point: near plane of the shadow projection
+  float farPlane = 50;                      ///< spot/point: far plane of the shadow projection
+};
+
+/// A loaded scene file.
+struct Scene {
+  std::filesystem::path path;          ///< the file it came from
+  std::vector<SceneObject> objects;    ///< everything drawn
+  std::vector<Light> lights;           ///< at least one
+  std::vector<CameraBookmark> cameras; ///< at least one
+  glm::vec3 boundsMin{0}, boundsMax{0};  ///< world-space bounds of all objects
+
+  /// Loads and validates a scene; throws wb::UsageError naming the file, the field and the reason.
+  static Scene load(const std::filesystem::path& file);
+};
+
+/// A scene on the GPU: one mesh and texture per object.
+class GpuScene {
+public:
+  /// Uploads every object and loads the textures (stb_image); throws wb::UsageError on a bad image.
+  explicit GpuScene(const Scene& scene);
+  /// Draws every object with `program`, setting u_model, u_color and u_hasTexture and binding the
+  /// object's texture to unit `textureUnit` (a white texel when it has none).
+  void draw(const Program& program, int textureUnit = 1) const;
+
+private:
+  struct Item {
+    Mesh mesh;
+    glm::mat4 model;
+    glm::vec3 color;
+    GLuint texture;
+    bool textured;
+  };
+  std::vector<Item> items_;
+  std::vector<Texture> textures_;
+  Texture white_;
+};
+
+}  // namespace wb

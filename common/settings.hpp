@@ -1,0 +1,48 @@
+/// @file settings.hpp
+/// Named lab settings: the same values the UI edits, `--set key=value` assigns and
+/// `--list-settings` prints. Labs register their tunables once, with a range and a one-line help.
+#pragma once
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace wb {
+
+/// One tunable: a name such as "shadow.map_size", a pointer to the lab's member, and its limits.
+struct Setting {
+  enum class Kind { Float, Int, Bool, Choice };
+  std::string name;                  ///< dotted name used by --set and the UI
+  std::string help;                  ///< one line, shown by --list-settings and as a tooltip
+  Kind kind;                         ///< value type
+  void* value;                       ///< points at the lab's member
+  float min = 0, max = 1;            ///< range for Float and Int
+  std::vector<std::string> choices;  ///< names for Choice (the int is the index)
+};
+
+/// The settings registry of one lab.
+class Settings {
+public:
+  /// Registers a float in [min, max].
+  void add(const std::string& name, float& v, float min, float max, const std::string& help);
+  /// Registers an int in [min, max].
+  void add(const std::string& name, int& v, int min, int max, const std::string& help);
+  /// Registers a bool (accepts true/false/1/0/on/off).
+  void add(const std::string& name, bool& v, const std::string& help);
+  /// Registers an int chosen by name from `choices`.
+  void addChoice(const std::string& name, int& v, std::vector<std::string> choices, const std::string& help);
+
+  /// Applies "key=value"; throws wb::UsageError saying what is accepted.
+  void assign(const std::string& assignment);
+  /// Prints every setting with its current value, range and help.
+  void list(std::ostream& out) const;
+  /// Draws an ImGui widget per setting whose name starts with `prefix`; returns true if any changed.
+  bool ui(const std::string& prefix = "") const;
+  /// All settings in registration order.
+  const std::vector<Setting>& all() const { return settings_; }
+
+private:
+  const Setting& find(const std::string& name) const;
+  std::vector<Setting> settings_;
+};
+
+}  // namespace wb

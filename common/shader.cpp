@@ -1,0 +1,222 @@
+#include "common/shader.hpp"
+
+#include "common/error.hpp"
+#include "common/variant.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace wb {
+namespace {
+
+std::string readFile(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw Error("cannot read shader file " + p.string());
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::vector<fs::path> splitPath(const std::string& s) {
+  std::vector<fs::path> out;
+  std::stringstream ss(s);
+  for (std::string item; std::getline(ss, item, ';');)
+    if (!item.empty()) out.emplace_back(item);
+  return out;
+}
+
+// Appends `text` (source number `index`) to `out`, expanding includes depth-first.
+void expand(const std::string& text, const fs::path& origin, const std::string& defines,
+            const std::vector<fs::path>& path, ShaderSource& src, std::ostringstream& out,
+            int depth) {
+  if (depth > 16) throw Error(origin.string() + ": #include nested too deeply (a cycle?)");
+  const int index = static_cast<int>(src.files.size());
+  src.files.push_back(origin);
+  static const std::regex includeRe(R"(^\s*#\s*include\s+\"([^\"]+)\")");
+  std::istringstream in(text);
+  int line = 0;
+  for (std::string s; std::getline(in, s);) {
+    ++line;
+    std::smatch m;
+    if (s.rfind("#version", 0) == 0) {
+      out << s << "\n" << defines << "#line " << line + 1 << " " << index << "\n";
+    } else if (std::regex_search(s, m, includeRe)) {
+      // The search path comes first, so a solution's or an overlay's exercise.glsl wins over the
+      // stub that sits next to the including file.
+      fs::path target = origin.parent_path() / m[1].str();
+      for (const auto& dir : path)
+        if (fs::exists(dir / m[1].str())) { target = dir / m[1].str(); break; }
+      if (!fs::exists(target)) target = findShaderFile(m[1].str(), path);
+      expand(readFile(target), target, "", path, src, out, depth + 1);
+      out << "#line " << line + 1 << " " << index << "\n";
+    } else {
+      out << s << "\n";
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<fs::path> shaderSearchPath() {
+  std::vector<fs::path> path;
+  if (const char* overlay = std::getenv("WB_SHADER_OVERLAY"); overlay && *overlay)
+    path = splitPath(overlay);
+  for (auto& p : splitPath(variant::kShaderPath)) path.push_back(p);
+  return path;
+}
+
+fs::path findShaderFile(const std::string& name, const std::vector<fs::path>& path) {
+  std::string searched;
+  for (const auto& dir : path) {
+    if (fs::exists(dir / name)) return dir / name;
+    searched += "\n  " + dir.string();
+  }
+  throw Error("shader file '" + name + "' not found; searched:" + searched);
+}
+
+ShaderSource preprocessShader(const std::string& text, const fs::path& origin,
+                              const std::string& defines, const std::vector<fs::path>& path) {
+  ShaderSource src;
+  std::ostringstream out;
+  expand(text, origin, defines, path, src, out, 0);
+  src.text = out.str();
+  return src;
+}
+
+std::string mapShaderLog(const std::string& log, const std::vector<fs::path>& files) {
+  // Mesa writes "2:14(3): error: ...", NVIDIA "2(14) : error ..."; both start with the source number.
+  static const std::regex posRe(R"((\d+):(\d+)\((\d+)\)|(\d+)\((\d+)\))");
+  std::string out;
+  std::istringstream in(log);
+  for (std::string s; std::getline(in, s);) {
+    std::smatch m;
+    if (std::regex_search(s, m, posRe)) {
+      const size_t file = std::stoul(m[1].matched ? m[1].str() : m[4].str());
+      const std::string line = m[1].matched ? m[2].str() : m[5].str();
+      if (file < files.size())
+        s = m.prefix().str() + files[file].string() + ":" + line + m.suffix().str();
+    }
+    out += s + "\n";
+  }
+  return out;
+}
+
+Program::Program(std::vector<ShaderStage> stages, std::string defines)
+    : stages_(std::move(stages)), defines_(std::move(defines)) {
+  program_ = build();
+}
+
+Program Program::fromSource(GLenum type, const std::string& text, const std::string& origin,
+                            const std::string& defines) {
+  Program p;
+  p.stages_ = {{type, origin}};
+  p.defines_ = defines;
+  p.inlineText_ = text;
+  p.program_ = p.build();
+  return p;
+}
+
+ProgramId Program::build() {
+  const auto path = shaderSearchPath();
+  inputs_.clear();
+  ProgramId program(glCreateProgram());
+  std::vector<GLuint> shaders;
+  std::string errors;
+  for (const auto& stage : stages_) {
+    ShaderSource src;
+    if (!inlineText_.empty()) {
+      src = preprocessShader(inlineText_, stage.file, defines_, path);
+    } else {
+      const fs::path file = findShaderFile(stage.file, path);
+      src = preprocessShader(readFile(file), file, defines_, path);
+    }
+    for (const auto& f : src.files)
+      if (fs::exists(f)) inputs_.emplace_back(f, fs::last_write_time(f));
+    GLuint sh = glCreateShader(stage.type);
+    const char* text = src.text.c_str();
+    glShaderSource(sh, 1, &text, nullptr);
+    glCompileShader(sh);
+    GLint ok = 0;
+    glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+      GLint len = 0;
+      glGetShaderiv(sh, GL_INFO_LOG_LENGTH, &len);
+      std::string log(std::max(len, 1), '\0');
+      glGetShaderInfoLog(sh, len, nullptr, log.data());
+      errors += mapShaderLog(log.c_str(), src.files);
+    }
+    glAttachShader(program.id(), sh);
+    shaders.push_back(sh);
+  }
+  if (errors.empty()) {
+    glLinkProgram(program.id());
+    GLint ok = 0;
+    glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+    if (!ok) {
+      GLint len = 0;
+      glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &len);
+      std::string log(std::max(len, 1), '\0');
+      glGetProgramInfoLog(program.id(), len, nullptr, log.data());
+      errors = "link error: " + std::string(log.c_str());
+    }
+  }
+  for (GLuint sh : shaders) glDeleteShader(sh);
+  if (!errors.empty()) {
+    std::string names;
+    for (const auto& s : stages_) names += (names.empty() ? "" : " + ") + s.file;
+    throw Error("shader " + names + " failed to build:\n" + errors);
+  }
+  return program;
+}
+
+Program Program::tryLoad(std::vector<ShaderStage> stages, std::string defines) {
+  Program p;
+  p.stages_ = std::move(stages);
+  p.defines_ = std::move(defines);
+  try {
+    p.program_ = p.build();
+  } catch (const Error& e) {
+    p.error_ = e.what();
+  }
+  return p;
+}
+
+bool Program::reloadIfChanged() {
+  bool changed = false;
+  for (const auto& [file, time] : inputs_) {
+    std::error_code ec;
+    if (fs::last_write_time(file, ec) != time) changed = true;
+  }
+  if (!changed) return false;
+  try {
+    program_ = build();
+    error_.clear();
+    return true;
+  } catch (const Error& e) {
+    error_ = e.what();  // keep drawing with the last good program
+    return false;
+  }
+}
+
+void Program::set(const char* n, float v) const { glProgramUniform1f(id(), glGetUniformLocation(id(), n), v); }
+void Program::set(const char* n, int v) const { glProgramUniform1i(id(), glGetUniformLocation(id(), n), v); }
+void Program::set(const char* n, const glm::vec2& v) const {
+  glProgramUniform2fv(id(), glGetUniformLocation(id(), n), 1, glm::value_ptr(v));
+}
+void Program::set(const char* n, const glm::vec3& v) const {
+  glProgramUniform3fv(id(), glGetUniformLocation(id(), n), 1, glm::value_ptr(v));
+}
+void Program::set(const char* n, const glm::vec4& v) const {
+  glProgramUniform4fv(id(), glGetUniformLocation(id(), n), 1, glm::value_ptr(v));
+}
+void Program::set(const char* n, const glm::mat4& v) const {
+  glProgramUniformMatrix4fv(id(), glGetUniformLocation(id(), n), 1, GL_FALSE, glm::value_ptr(v));
+}
+
+}  // namespace wb

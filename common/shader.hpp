@@ -1,0 +1,87 @@
+/// @file shader.hpp
+/// GLSL programs loaded from files on a search path, with `#include "…"`, injected `#define`s,
+/// errors mapped back to the original file and line, and hot reload that keeps the last good program.
+#pragma once
+#include "common/gl.hpp"
+
+#include <glm/mat4x4.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace wb {
+
+/// One stage of a program: its type and its file name, looked up on the search path.
+struct ShaderStage {
+  GLenum type;       ///< GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER, ...
+  std::string file;  ///< e.g. "depth.frag"; resolved on shaderSearchPath()
+};
+
+/// This build's shader search path: $WB_SHADER_OVERLAY (if set), then the variant's folders.
+std::vector<std::filesystem::path> shaderSearchPath();
+
+/// Finds `name` on `path` (first match wins); throws wb::Error naming every folder searched.
+std::filesystem::path findShaderFile(const std::string& name,
+                                     const std::vector<std::filesystem::path>& path);
+
+/// GLSL text after include expansion, with the list of files it came from (index = source number).
+struct ShaderSource {
+  std::string text;                          ///< the expanded source, ready for glShaderSource
+  std::vector<std::filesystem::path> files;  ///< files read; `#line L N` refers to files[N]
+};
+
+/// Expands `text` (read from `origin`): inserts `defines` after `#version`, resolves `#include`
+/// relative to the including file and then on `path`, and emits `#line` so errors map back.
+ShaderSource preprocessShader(const std::string& text, const std::filesystem::path& origin,
+                              const std::string& defines,
+                              const std::vector<std::filesystem::path>& path);
+
+/// Rewrites compiler positions such as "2:14(3): error" into "shaders/exercise.glsl:14: error".
+std::string mapShaderLog(const std::string& log, const std::vector<std::filesystem::path>& files);
+
+/// A linked program built from files. Construction throws wb::Error (with file:line) on failure;
+/// reloadIfChanged() never throws and keeps the last good program.
+class Program {
+public:
+  Program() = default;
+  /// Builds the program from files on shaderSearchPath(), with `defines` injected.
+  Program(std::vector<ShaderStage> stages, std::string defines = {});
+  /// Builds a program from in-memory stages; `origin` names the text in error messages.
+  static Program fromSource(GLenum type, const std::string& text, const std::string& origin,
+                            const std::string& defines = {});
+
+  /// Like the constructor, but never throws: on failure ok() is false and error() says why, and
+  /// reloadIfChanged() retries when a file changes. Labs use this so a broken edit never stops them.
+  static Program tryLoad(std::vector<ShaderStage> stages, std::string defines = {});
+  /// True once a program has been built successfully.
+  bool ok() const { return program_.id() != 0; }
+
+  /// Rebuilds if any file it was read from changed; returns true when a new program is in use.
+  bool reloadIfChanged();
+  /// The error of the last failed build ("" when the current program is up to date).
+  const std::string& error() const { return error_; }
+  /// The GL program name.
+  GLuint id() const { return program_.id(); }
+  /// Binds the program.
+  void use() const { glUseProgram(program_.id()); }
+
+  /// Sets a uniform of the bound program by name (missing names are ignored, as GL does).
+  void set(const char* name, float v) const;
+  void set(const char* name, int v) const;                ///< @copydoc set(const char*,float) const
+  void set(const char* name, const glm::vec2& v) const;   ///< @copydoc set(const char*,float) const
+  void set(const char* name, const glm::vec3& v) const;   ///< @copydoc set(const char*,float) const
+  void set(const char* name, const glm::vec4& v) const;   ///< @copydoc set(const char*,float) const
+  void set(const char* name, const glm::mat4& v) const;   ///< @copydoc set(const char*,float) const
+
+private:
+  ProgramId build();  // throws wb::Error
+  std::vector<ShaderStage> stages_;
+  std::string defines_;
+  std::string inlineText_;  // for fromSource(): the text of stages_[0]
+  std::vector<std::pair<std::filesystem::path, std::filesystem::file_time_type>> inputs_;
+  ProgramId program_;
+  std::string error_;
+};
+
+}  // namespace wb

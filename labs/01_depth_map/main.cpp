@@ -1,0 +1,105 @@
+// Lab 01: Depth map, the shadow-mapping principle
+// ---------------------------------------------------------------------------------------------
+// Difficulty: 1/5. Handout: README.md beside this file.
+// Exercises:  01.1, 01.2 in exercise.cpp; 01.3, 01.4, 01.5 in shaders/exercise.glsl.
+// Controls:   drag to orbit, wheel to zoom, 1-9 camera bookmarks, F12 screenshot.
+// Two passes: the light renders the scene's depth into a texture (the shadow map); the camera then
+// renders the scene and asks, per pixel, whether the light saw something nearer than this point.
+#include "common/lab.hpp"
+#include "exercise.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+
+namespace {
+
+class DepthMapLab : public wb::Lab {
+public:
+  DepthMapLab() : Lab("scenes/depth_map.json") {
+    settings.add("alpha.cutoff", alphaCutoff, 0.0f, 1.0f, "leaf texels with lower alpha cast no shadow");
+  }
+
+protected:
+  void init() override {
+    depthProgram = &loadProgram({{GL_VERTEX_SHADER, "depth.vert"}, {GL_FRAGMENT_SHADER, "depth.frag"}});
+    sceneProgram = &loadProgram({{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "scene.frag"}});
+    // The info panel asks each GLSL exercise once with a sample input whether it is implemented.
+    glslExercise("01.3", "exercise.glsl", "worldToShadowCoord(mat4(1.0), vec3(0.0)).x");
+    glslExercise("01.4", "exercise.glsl", "hardShadow(wb_tex0, vec3(0.5), 0.0)");
+    glslExercise("01.5", "exercise.glsl", "casterCoverage(wb_tex0, vec2(0.5), 0.5)");
+    // Both C++ exercises are tried once, so the panel shows them whichever light is in use.
+    attempt("01.1", [] { lab01::directionalLightViewProj({0, -1, 0}, glm::vec3(-1), glm::vec3(1)); });
+    attempt("01.2", [] { lab01::spotLightViewProj({0, 5, 0}, {0, -1, 0}, 30, 0.5f, 20); });
+  }
+
+  void render() override {
+    const wb::Light& light = scene.lights[lightIndex];
+    if (light.type == wb::LightType::Point) {
+      warn("lab 01 casts shadows from directional and spot lights; light " + std::to_string(lightIndex) +
+           " is a point light (lab 08 covers those)");
+    }
+    // The light's camera: an orthographic box around the scene, or the spot's perspective cone.
+    const bool spot = light.type == wb::LightType::Spot;
+    const bool ready = spot ? attempt("01.2", [&] {
+      lightViewProj = lab01::spotLightViewProj(light.position, light.direction, light.angle, light.nearPlane, light.farPlane);
+    })
+                            : light.type == wb::LightType::Directional && attempt("01.1", [&] {
+                                lightViewProj = lab01::directionalLightViewProj(light.direction, scene.boundsMin, scene.boundsMax);
+                              });
+    resizeShadowMap(shadowMapSize());
+
+    // PASS 1: depth from the light. No colour target; only the depth buffer is kept.
+    if (ready) {
+      auto timer = timePass("shadow");
+      glBindFramebuffer(GL_FRAMEBUFFER, shadowFbo.id());
+      glViewport(0, 0, mapSize, mapSize);
+      glClear(GL_DEPTH_BUFFER_BIT);
+      glDisable(GL_CULL_FACE);  // the leaves are open quads; every face may cast a shadow
+      depthProgram->set("u_lightViewProj", lightViewProj);
+      depthProgram->set("u_alphaCutoff", alphaCutoff);
+      gpuScene->draw(*depthProgram);
+      showLight({lightViewProj, spot, light.nearPlane, light.farPlane, shadowMap.id()});
+    }
+
+    // PASS 2: the camera's view, with the shadow test per pixel.
+    auto timer = timePass("lighting");
+    bindFrameTarget();
+    const wb::Program& p = *sceneProgram;
+    p.set("u_viewProj", viewProj());
+    p.set("u_lightViewProj", lightViewProj);
+    p.set("u_shadowsReady", ready ? 1 : 0);
+    p.set("u_bias", depthBias());
+    p.set("u_alphaCutoff", alphaCutoff);
+    p.set("u_lightType", spot ? 1 : 0);
+    p.set("u_lightPos", light.position);
+    p.set("u_lightDir", light.direction);
+    p.set("u_spotCos", std::cos(glm::radians(light.angle)));
+    p.set("u_shadowMap", 0);
+    glBindTextureUnit(0, shadowMap.id());
+    gpuScene->draw(p);
+  }
+
+private:
+  // (Re)allocates the depth texture when the map size setting changes.
+  void resizeShadowMap(int size) {
+    if (size == mapSize && shadowMap.id()) return;
+    mapSize = size;
+    shadowMap = wb::makeTexture2D(GL_DEPTH_COMPONENT32F, size, size, GL_NEAREST, GL_CLAMP_TO_BORDER);
+    const float outside[4] = {1, 1, 1, 1};  // beyond the map's edge nothing blocks the light
+    glTextureParameterfv(shadowMap.id(), GL_TEXTURE_BORDER_COLOR, outside);
+    shadowFbo = wb::makeFramebuffer({}, shadowMap.id());
+  }
+
+  wb::Program* depthProgram = nullptr;  // PASS 1
+  wb::Program* sceneProgram = nullptr;  // PASS 2
+  wb::Texture shadowMap;
+  wb::Framebuffer shadowFbo;
+  int mapSize = 0;
+  glm::mat4 lightViewProj{1};
+  float alphaCutoff = 0.5f;  // leaf texels below this alpha are holes
+};
+
+}  // namespace
+
+int main(int argc, char** argv) { return wb::run<DepthMapLab>(argc, argv); }

@@ -1,0 +1,43 @@
+#version 450 core
+// PASS 2 fragment stage: shade each visible point, asking the shadow map whether the light reaches it.
+#include "exercise.glsl"
+#include "wb/lighting.glsl"
+in vec3 v_world;
+in vec3 v_normal;
+in vec2 v_uv;
+uniform vec3 u_color;
+uniform sampler2D u_albedo;
+uniform int u_hasTexture;
+uniform float u_alphaCutoff;
+uniform sampler2D u_shadowMap;
+uniform mat4 u_lightViewProj;
+uniform int u_shadowsReady;  // 0 while the light's matrix (01.1 / 01.2) is not implemented
+uniform float u_bias;
+uniform int u_lightType;     // 0 directional, 1 spot
+uniform vec3 u_lightPos;
+uniform vec3 u_lightDir;     // the direction the light travels
+uniform float u_spotCos;     // cosine of the spot cone's half-angle
+layout(location = 0) out vec4 o_color;
+layout(location = 1) out float o_visibility;  // 1 lit, 0 shadowed: --dump-visibility writes it
+
+void main() {
+  vec4 texel = u_hasTexture != 0 ? texture(u_albedo, v_uv) : vec4(1.0);
+  if (texel.a < u_alphaCutoff) discard;  // the camera sees through the leaves' holes too
+  vec3 albedo = u_color * texel.rgb;
+  vec3 n = normalize(v_normal);
+  if (!gl_FrontFacing) n = -n;  // leaves are lit from both sides
+
+  float visibility = WB_TODO;
+  if (u_shadowsReady != 0) {
+    vec3 coord = worldToShadowCoord(u_lightViewProj, v_world);
+    if (!wbIsTodo(coord)) visibility = hardShadow(u_shadowMap, coord, u_bias);
+  }
+  o_visibility = visibility;
+  if (wbIsTodo(visibility)) {  // an exercise is missing: show it, never fake a shadow
+    o_color = vec4(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), 1.0);
+    return;
+  }
+  vec3 toLight = u_lightType == 0 ? -u_lightDir : normalize(u_lightPos - v_world);
+  float cone = u_lightType == 0 ? 1.0 : smoothstep(u_spotCos, mix(u_spotCos, 1.0, 0.1), dot(-toLight, u_lightDir));
+  o_color = vec4(wbShade(albedo, n, toLight, vec3(cone), visibility), 1.0);
+}

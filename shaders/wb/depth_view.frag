@@ -1,0 +1,17 @@
+#version 450 core
+// Shows a depth map. A perspective map stores non-linear depth that looks all white, so it is turned
+// back into eye distance first.
+in vec2 v_uv;
+uniform sampler2D u_map;
+uniform int u_perspective;
+uniform float u_near, u_far;
+layout(location = 0) out vec4 o_color;
+void main() {
+  float d = texture(u_map, v_uv).r;
+  if (u_perspective != 0) {
+    float zNdc = d * 2.0 - 1.0;
+    float eye = 2.0 * u_near * u_far / (u_far + u_near - zNdc * (u_far - u_near));
+    d = (eye - u_near) / (u_far - u_near);
+  }
+  o_color = vec4(vec3(d), 1.0);
+}

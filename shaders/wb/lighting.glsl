@@ -1,0 +1,14 @@
+// Shading shared by the labs: simple diffuse + ambient, so the shadow term is what the eye sees.
+#ifndef WB_LIGHTING_GLSL
+#define WB_LIGHTING_GLSL
+// Diffuse light scaled by visibility, over a constant ambient term that keeps shadows readable.
+vec3 wbShade(vec3 albedo, vec3 n, vec3 toLight, vec3 lightColor, float visibility) {
+  float diffuse = max(dot(n, toLight), 0.0);
+  return albedo * (0.25 + 0.75 * diffuse * visibility * lightColor);
+}
+// Magenta/black stripes mark pixels whose exercise is not implemented yet: visible, never mistaken
+// for a shadow.
+vec3 wbTodoPattern(vec2 fragCoord) {
+  return mod(floor((fragCoord.x + fragCoord.y) / 12.0), 2.0) < 1.0 ? vec3(0.85, 0.1, 0.75) : vec3(0.1);
+}
+#endif

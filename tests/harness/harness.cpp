@@ -1,0 +1,144 @@
+#include "tests/harness/harness.hpp"
+
+#include "common/context.hpp"
+#include "common/glsl_harness.hpp"
+#include "common/shader.hpp"
+#include "common/variant.hpp"
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace wb::test {
+namespace {
+std::unique_ptr<Context> g_context;
+std::string g_renderer;
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Reference | result | diff, side by side in one picture is handy, but three files are what the
+// report links; the diff is red where the result has extra shadow, blue where it lost shadow,
+// magenta where the exercise is still a stub.
+std::vector<uint8_t> diffImage(const FloatImage& ref, const FloatImage& got, float tol) {
+  std::vector<uint8_t> rgba(ref.pixels.size() * 4, 255);
+  for (size_t i = 0; i < ref.pixels.size(); ++i) {
+    uint8_t* p = &rgba[4 * i];
+    const float r = ref.pixels[i], g = got.pixels[i];
+    const auto grey = uint8_t(40 + 60 * std::clamp(r, 0.0f, 1.0f));
+    p[0] = p[1] = p[2] = grey;
+    if (isTodo(g)) p[0] = 230, p[1] = 0, p[2] = 200;
+    else if (g < r - tol) p[0] = 255, p[1] = 40, p[2] = 40;
+    else if (g > r + tol) p[0] = 40, p[1] = 90, p[2] = 255;
+  }
+  return rgba;
+}
+}  // namespace
+
+bool g_updateGolden = false;  // set by main() from --update-golden
+
+bool updatingGolden() { return g_updateGolden; }
+
+void GlTest::SetUpTestSuite() {
+  if (!g_context) {
+    g_context = Context::create({true, 0, 0, "tests", true});
+    g_renderer = Context::renderer();
+  }
+  ::testing::Test::RecordProperty("gl_renderer", g_renderer);
+}
+
+void GlTest::TearDown() {
+  for (const auto& e : takeGlErrors()) ADD_FAILURE() << "ERROR: OpenGL reported: " << e;
+}
+
+std::string renderer() { return g_renderer; }
+
+std::vector<glm::vec4> runExercise(const std::string& id, const std::string& body, int count, int stride,
+                                   const std::vector<glm::vec4>& inputs, const std::vector<unsigned>& textures) {
+  const fs::path file = findShaderFile("exercise.glsl", shaderSearchPath());
+  return runGlslKernel(isolatedExerciseSource("exercise.glsl", id), file, body, count, stride, inputs,
+                       std::vector<GLuint>(textures.begin(), textures.end()));
+}
+
+void expectSceneMatchesGolden(const std::string& id, const std::string& name, const std::vector<std::string>& args,
+                              float tolerance, double maxFailingFraction) {
+  const fs::path out = fs::path(variant::kOutputDir) / ("Ex" + id + "_" + name);
+  fs::create_directories(out);
+  const fs::path golden = fs::path(variant::kSourceDir) / "tests/golden" / variant::kLab / (name + ".pfm");
+
+  // GLSL isolation: the exercise's own chunk from this build, everything else from the solution.
+  // A GLSL exercise then runs in the solution's app (so C++ stubs cannot block it); a C++ exercise
+  // runs in this build's app with the solution's GLSL.
+  std::string env = "WB_STRICT_GL=1 ";
+  std::string exe = variant::kLabExe;
+  const bool haveSolution = *variant::kSolutionDir != '\0' && !updatingGolden();
+  if (haveSolution) {
+    const std::string mine = slurp(findShaderFile("exercise.glsl", shaderSearchPath()));
+    if (mine.find("// EXERCISE " + id) != std::string::npos) exe = variant::kSolutionExe[0] ? variant::kSolutionExe : exe;
+    std::ofstream(out / "exercise.glsl") << isolatedExerciseSource("exercise.glsl", id);
+    env += "WB_SHADER_OVERLAY=" + quote(out.string()) + " ";
+  }
+  const fs::path pfm = out / "result.pfm", log = out / "lab.log";
+  std::string cmd = env + "timeout 120 " + quote(exe) + " --headless --size 256x256 --dump-visibility " + quote(pfm.string());
+  for (const auto& a : args) cmd += " " + quote(a);
+  fs::remove(pfm);
+  const int status = std::system((cmd + " >" + quote(log.string()) + " 2>&1").c_str());
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+  if (code != 0 || !fs::exists(pfm)) {
+    FAIL() << "ERROR: the lab " << (code == 124 ? "timed out" : "failed (exit " + std::to_string(code) + ")")
+           << ":\n" << slurp(log) << "command: " << cmd;
+  }
+  const FloatImage got = readPfm(pfm);
+  if (updatingGolden()) {
+    fs::create_directories(golden.parent_path());
+    fs::copy_file(pfm, golden, fs::copy_options::overwrite_existing);
+    std::ofstream(golden.parent_path() / "renderer.txt") << Context::renderer() << "\n";
+    std::printf("updated %s\n", golden.string().c_str());
+    return;
+  }
+  if (!fs::exists(golden)) FAIL() << "ERROR: no golden data " << golden << "; run ./workbook golden " << id.substr(0, 2);
+  const FloatImage ref = readPfm(golden);
+  if (ref.width != got.width || ref.height != got.height) FAIL() << "ERROR: golden " << golden << " has another size";
+  size_t failing = 0, todo = 0;
+  for (size_t i = 0; i < ref.pixels.size(); ++i) {
+    if (isTodo(got.pixels[i])) ++todo;
+    else if (std::abs(got.pixels[i] - ref.pixels[i]) > tolerance) ++failing;
+  }
+  const double fraction = double(failing + todo) / double(ref.pixels.size());
+  if (fraction <= maxFailingFraction) return;
+  writePng(out / "reference.png", ref.width, ref.height, toGrey(ref));
+  writePng(out / "result.png", got.width, got.height, toGrey(got));
+  writePng(out / "diff.png", ref.width, ref.height, diffImage(ref, got, tolerance));
+  std::ostringstream msg;
+  if (todo) {
+    msg << "NOT IMPLEMENTED: " << todo << " pixels of scene '" << name << "' show the not-implemented placeholder";
+    std::istringstream lines(slurp(log));
+    for (std::string l; std::getline(lines, l);)
+      if (l.find("not implemented") != std::string::npos) msg << "\n  " << l;
+  } else {
+    char pct[64];
+    std::snprintf(pct, sizeof pct, "%.2f%% of pixels (allowed %.2f%%)", 100 * fraction, 100 * maxFailingFraction);
+    msg << "WRONG: visibility in scene '" << name << "' differs from the reference on " << pct;
+  }
+  msg << "\n  diff: " << (out / "diff.png").string() << " (red: extra shadow, blue: missing shadow)"
+      << "\n  reference: " << (out / "reference.png").string() << "\n  result: " << (out / "result.png").string();
+  FAIL() << msg.str();
+}
+
+}  // namespace wb::test

@@ -1,0 +1,66 @@
+/// @file harness.hpp
+/// What every lab's tests use. Failure messages start with one of three words that `check` and the
+/// grader classify: "NOT IMPLEMENTED" (a stub), "WRONG" (a bad answer), "ERROR" (it did not run).
+#pragma once
+#include "common/error.hpp"
+#include "common/image.hpp"
+
+#include <glm/glm.hpp>
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace wb::test {
+
+/// Fixture for tests that need GL: one headless EGL context per process; fails on KHR_debug errors.
+class GlTest : public ::testing::Test {
+public:
+  /// Creates the shared context on first use and records GL_RENDERER as a test property.
+  static void SetUpTestSuite();
+
+protected:
+  /// Fails the test if the GL reported errors during it.
+  void TearDown() override;
+};
+
+/// GL_RENDERER of the shared test context.
+std::string renderer();
+/// True when the test binary runs with --update-golden (regenerating the golden data).
+bool updatingGolden();
+
+/// Runs GLSL exercise `id` (isolated: the other exercises come from the solution when it exists)
+/// in a compute kernel; see wb::runGlslKernel for `body`, `stride` and `textures`. Throws
+/// wb::Error on a compile error.
+std::vector<glm::vec4> runExercise(const std::string& id, const std::string& body, int count, int stride,
+                                   const std::vector<glm::vec4>& inputs, const std::vector<unsigned>& textures = {});
+
+/// Runs a C++ exercise call; a wb::NotImplemented becomes a "NOT IMPLEMENTED" failure.
+#define WB_TRY_EXERCISE(statement)                                                        \
+  try {                                                                                   \
+    statement;                                                                            \
+  } catch (const wb::NotImplemented& e) {                                                 \
+    FAIL() << e.what();                                                                   \
+  } catch (const std::exception& e) {                                                     \
+    FAIL() << "ERROR: the exercise threw: " << e.what();                                  \
+  }
+
+/// Runs a GLSL exercise kernel into `results`; a compile error or WB_TODO output ends the test.
+#define WB_RUN_GLSL(results, ...)                                                          \
+  try {                                                                                    \
+    results = ::wb::test::runExercise(__VA_ARGS__);                                        \
+  } catch (const std::exception& e) {                                                      \
+    FAIL() << "ERROR: " << e.what();                                                       \
+  }                                                                                        \
+  for (const auto& r : results)                                                            \
+    if (r.x <= -1e29f || r.y <= -1e29f || r.z <= -1e29f || r.w <= -1e29f)                  \
+      FAIL() << "NOT IMPLEMENTED: the GLSL function still returns WB_TODO";
+
+/// Layer 2: renders a golden case with the lab itself (`--headless --size 256x256` plus `args`),
+/// with exercise `id` isolated, and compares its visibility with tests/golden/<lab>/<name>.pfm.
+/// A pixel fails when it differs by more than `tolerance`; the test fails when more than
+/// `maxFailingFraction` of pixels fail. On failure it writes reference, result and diff PNGs.
+void expectSceneMatchesGolden(const std::string& id, const std::string& name, const std::vector<std::string>& args,
+                              float tolerance, double maxFailingFraction);
+
+}  // namespace wb::test

@@ -1,0 +1,140 @@
+// main() of every lab's test binary. Besides plain GoogleTest it offers:
+//   --check          print one line per exercise: done / NOT IMPLEMENTED / WRONG / ERROR, with a
+//                    one-line diagnosis (what `./workbook check NN` shows)
+//   --expect-stubs   like --check, but succeed only if every exercise is NOT IMPLEMENTED (CI runs
+//                    this on the student build to prove the stubs are stubs)
+//   --update-golden  regenerate tests/golden/<lab>/ from this build (solution builds only)
+#include "common/variant.hpp"
+#include "tests/harness/harness.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+
+namespace fs = std::filesystem;
+
+namespace wb::test {
+extern bool g_updateGolden;
+}
+
+namespace {
+
+struct ManifestEntry {
+  std::string id, title, file;
+};
+
+std::vector<ManifestEntry> readManifest() {
+  std::ifstream in(fs::path(wb::variant::kLabDir) / "exercises.json");
+  std::vector<ManifestEntry> out;
+  for (const auto& e : nlohmann::json::parse(in).at("exercises")) out.push_back({e.at("id"), e.at("title"), e.at("file")});
+  return out;
+}
+
+// "Ex01_3_WorldToShadow" -> "01.3"
+std::string exerciseOf(const std::string& testName) {
+  static const std::regex re(R"(^Ex(\d\d)_(\d+|x)_)");
+  std::smatch m;
+  return std::regex_search(testName, m, re) ? m[1].str() + "." + m[2].str() : "";
+}
+
+// Collects the first failure of each test and prints the per-exercise table at the end.
+class CheckListener : public ::testing::EmptyTestEventListener {
+public:
+  explicit CheckListener(bool expectStubs) : expectStubs_(expectStubs) {}
+  int exitCode = 0;
+
+  void OnTestPartResult(const ::testing::TestPartResult& r) override {
+    if (!r.failed()) return;
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    auto& slot = first_[exerciseOf(info->name())];
+    const std::string msg = r.message();
+    // Keep the most serious message of the exercise: ERROR > WRONG > NOT IMPLEMENTED.
+    auto rank = [](const std::string& m) { return m.rfind("ERROR", 0) == 0 ? 3 : m.rfind("NOT IMPLEMENTED", 0) == 0 ? 1 : 2; };
+    if (slot.empty() || rank(msg) > rank(slot)) slot = msg;
+  }
+  void OnTestProgramEnd(const ::testing::UnitTest&) override {
+    const auto manifest = readManifest();
+    std::printf("\nLab %s: %s build\n", wb::variant::kLab, wb::variant::kName);
+    std::printf("  %-5s %-46s %-16s %s\n", "ID", "exercise", "status", "diagnosis");
+    int done = 0;
+    for (const auto& e : manifest) {
+      const std::string msg = first_.count(e.id) ? first_[e.id] : "";
+      std::string status = msg.empty() ? "done" : msg.rfind("NOT IMPLEMENTED", 0) == 0 ? "not implemented"
+                                                : msg.rfind("ERROR", 0) == 0             ? "error"
+                                                                                          : "wrong";
+      done += msg.empty();
+      if (expectStubs_ && status != "not implemented") exitCode = 1;
+      std::string first = msg.substr(0, msg.find('\n'));
+      std::string diff;
+      if (auto at = msg.find("diff: "); at != std::string::npos) diff = msg.substr(at + 6, msg.find('\n', at) - at - 6);
+      std::printf("  %-5s %-46.46s %-16s %s\n", e.id.c_str(), e.title.c_str(), status.c_str(), first.c_str());
+      if (!diff.empty()) std::printf("  %-5s %-46s %-16s diff image: %s\n", "", "", "", diff.c_str());
+    }
+    if (!expectStubs_ && done != int(manifest.size())) exitCode = 1;
+    std::printf("  %d of %zu exercises done.%s\n", done, manifest.size(),
+                expectStubs_ ? (exitCode ? " Some stubs are not reported as NOT IMPLEMENTED." : " Every stub reports NOT IMPLEMENTED.") : "");
+  }
+
+private:
+  bool expectStubs_;
+  std::map<std::string, std::string> first_;
+};
+
+}  // namespace
+
+// The manifest (labs/NN/exercises.json) is the one list of exercises: every exercise has tests, every
+// test belongs to an exercise, and every exercise has its "// EXERCISE NN.k" marker in its file.
+TEST(Manifest, EveryExerciseHasTestsAndEveryTestAnExercise) {
+  std::set<std::string> ids, tested;
+  for (const auto& e : readManifest()) ids.insert(e.id);
+  const auto* unit = ::testing::UnitTest::GetInstance();
+  for (int s = 0; s < unit->total_test_suite_count(); ++s) {
+    const auto* suite = unit->GetTestSuite(s);
+    if (std::string(suite->name()) == "Manifest") continue;
+    for (int t = 0; t < suite->total_test_count(); ++t) {
+      const std::string name = suite->GetTestInfo(t)->name(), id = exerciseOf(name);
+      EXPECT_TRUE(ids.count(id)) << "WRONG: test " << suite->name() << "." << name << " names no exercise of the manifest";
+      tested.insert(id);
+    }
+  }
+  for (const auto& id : ids) EXPECT_TRUE(tested.count(id)) << "WRONG: exercise " << id << " has no tests";
+}
+
+TEST(Manifest, EveryExerciseHasItsMarker) {
+  for (const auto& e : readManifest()) {
+    std::ifstream in(fs::path(wb::variant::kLabDir) / e.file);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("// EXERCISE " + e.id), std::string::npos)
+        << "WRONG: labs/" << wb::variant::kLab << "/" << e.file << " has no '// EXERCISE " << e.id << "' marker";
+  }
+}
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  bool check = false, expectStubs = false;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--check")) check = true;
+    else if (!std::strcmp(argv[i], "--expect-stubs")) check = expectStubs = true;
+    else if (!std::strcmp(argv[i], "--update-golden")) wb::test::g_updateGolden = true;
+    else {
+      std::fprintf(stderr, "%s: unknown option '%s' (accepted: --check, --expect-stubs, --update-golden, --gtest_*)\n", argv[0], argv[i]);
+      return 2;
+    }
+  }
+  if (wb::test::g_updateGolden && std::string(wb::variant::kName) != "solution") {
+    std::fprintf(stderr, "%s: golden data is generated from the solution build only\n", argv[0]);
+    return 2;
+  }
+  if (!check) return RUN_ALL_TESTS();
+  auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
+  delete listeners.Release(listeners.default_result_printer());
+  auto* listener = new CheckListener(expectStubs);
+  listeners.Append(listener);
+  const int gtest = RUN_ALL_TESTS();
+  return listener->exitCode ? listener->exitCode : (expectStubs ? 0 : gtest);
+}
