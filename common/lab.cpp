@@ -123,7 +123,7 @@ Lab::Lab(std::string defaultScene) : impl_(std::make_unique<Impl>()), defaultSce
     auto j = nlohmann::json::parse(readText(manifest));
     number_ = j.at("lab").get<std::string>().substr(0, 2);
     title_ = j.at("title").get<std::string>();
-    for (const auto& e : j.at("exercises")) exercises_.push_back({e.at("id"), e.at("title"), {}, {}});
+    for (const auto& e : j.at("exercises")) exercises_.push_back({e.at("id").get<std::string>(), e.at("title").get<std::string>(), {}, {}});
   } catch (const std::exception& e) {
     std::fprintf(stderr, "warning: cannot read %s (%s); the exercise list will be empty\n",
                  manifest.string().c_str(), e.what());

@@ -104,11 +104,20 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
     FAIL() << "ERROR: the lab " << (code == 124 ? "timed out" : "failed (exit " + std::to_string(code) + ")")
            << ":\n" << slurp(log) << "command: " << cmd;
   }
+  // The app probes every exercise; a stub whose effect cannot be seen in pixels (an alpha test
+  // that keeps everything) is still reported as not implemented.
+  {
+    std::istringstream lines(slurp(log));
+    for (std::string l; std::getline(lines, l);)
+      if (l.rfind("Exercise " + id + " (", 0) == 0 && l.find("not implemented yet") != std::string::npos)
+        FAIL() << "NOT IMPLEMENTED: " << l;
+  }
   const FloatImage got = readPfm(pfm);
   if (updatingGolden()) {
     fs::create_directories(golden.parent_path());
     fs::copy_file(pfm, golden, fs::copy_options::overwrite_existing);
-    std::ofstream(golden.parent_path() / "renderer.txt") << Context::renderer() << "\n";
+    GlTest::SetUpTestSuite();  // for the renderer string stored beside the golden data
+    std::ofstream(golden.parent_path() / "renderer.txt") << renderer() << "\n";
     std::printf("updated %s\n", golden.string().c_str());
     return;
   }

@@ -31,7 +31,8 @@ struct ManifestEntry {
 std::vector<ManifestEntry> readManifest() {
   std::ifstream in(fs::path(wb::variant::kLabDir) / "exercises.json");
   std::vector<ManifestEntry> out;
-  for (const auto& e : nlohmann::json::parse(in).at("exercises")) out.push_back({e.at("id"), e.at("title"), e.at("file")});
+  const auto manifest = nlohmann::json::parse(in);  // keep it alive while iterating
+  for (const auto& e : manifest.at("exercises")) out.push_back({e.at("id").get<std::string>(), e.at("title").get<std::string>(), e.at("file").get<std::string>()});
   return out;
 }
 
@@ -48,11 +49,15 @@ public:
   explicit CheckListener(bool expectStubs) : expectStubs_(expectStubs) {}
   int exitCode = 0;
 
+  void OnTestStart(const ::testing::TestInfo& info) override { current_ = exerciseOf(info.name()); }
   void OnTestPartResult(const ::testing::TestPartResult& r) override {
     if (!r.failed()) return;
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    auto& slot = first_[exerciseOf(info->name())];
-    const std::string msg = r.message();
+    auto& slot = first_[current_];
+    // gtest puts its own text ("Failed", "Value of: ...") before ours; start at our keyword.
+    const std::string full = r.message();
+    size_t at = std::string::npos;
+    for (const char* k : {"NOT IMPLEMENTED", "WRONG", "ERROR"}) at = std::min(at, full.find(k));
+    const std::string msg = at == std::string::npos ? "WRONG: " + full : full.substr(at);
     // Keep the most serious message of the exercise: ERROR > WRONG > NOT IMPLEMENTED.
     auto rank = [](const std::string& m) { return m.rfind("ERROR", 0) == 0 ? 3 : m.rfind("NOT IMPLEMENTED", 0) == 0 ? 1 : 2; };
     if (slot.empty() || rank(msg) > rank(slot)) slot = msg;
@@ -82,6 +87,7 @@ public:
 
 private:
   bool expectStubs_;
+  std::string current_;  // the exercise of the running test
   std::map<std::string, std::string> first_;
 };
 
