@@ -75,10 +75,13 @@ function(_wb_register_tests lab nn variant target ids)
 endfunction()
 
 # A mutant is the solution with one deliberate mistake; the tests of its exercise must catch it.
-# File format (tests/mutants/NN_name/NAME.mutant), one "key: value" per line:
+# A perturbation is the solution changed in a harmless way (another correct formulation, a padded
+# fit); the tests of its exercise must still pass. Together they bracket every tolerance.
+# File format (tests/mutants/NN_name/NAME.mutant or NAME.perturbation), one "key: value" per line:
 #   exercise: 01.3   file: shaders/exercise.glsl   find: <exact text>   replace: <text>
 function(_wb_add_mutant lab nn mutant_file)
   get_filename_component(name ${mutant_file} NAME_WE)
+  get_filename_component(kind ${mutant_file} LAST_EXT)
   file(STRINGS ${mutant_file} lines)
   foreach(key exercise file find replace)
     set(${key} "")
@@ -109,10 +112,19 @@ function(_wb_add_mutant lab nn mutant_file)
   set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${mutant_file})
   _wb_lab_variant(${lab} ${nn} "mutant" "_mutant_${name}" ${mutant_dir})
   string(REPLACE "." "_" tag ${exercise})
-  add_test(NAME mutant.lab${nn}.${name} COMMAND lab${nn}_mutant_${name}_tests --gtest_filter=*Ex${tag}_*)
-  # The mutant is caught when a test of its exercise fails as WRONG (not as "not implemented").
-  set_tests_properties(mutant.lab${nn}.${name} PROPERTIES LABELS "lab${nn};mutant" TIMEOUT 120
-                       PASS_REGULAR_EXPRESSION "WRONG" FAIL_REGULAR_EXPRESSION "NOT IMPLEMENTED")
+  set(test mutant.lab${nn}.${name})
+  if(kind STREQUAL ".perturbation")
+    set(test perturbation.lab${nn}.${name})
+  endif()
+  add_test(NAME ${test} COMMAND lab${nn}_mutant_${name}_tests --gtest_filter=*Ex${tag}_*)
+  if(kind STREQUAL ".perturbation")
+    # Harmless: every test of the exercise passes.
+    set_tests_properties(${test} PROPERTIES LABELS "lab${nn};perturbation" TIMEOUT 120)
+  else()
+    # Caught: a test of its exercise fails as WRONG (not as "not implemented").
+    set_tests_properties(${test} PROPERTIES LABELS "lab${nn};mutant" TIMEOUT 120
+                         PASS_REGULAR_EXPRESSION "WRONG" FAIL_REGULAR_EXPRESSION "NOT IMPLEMENTED")
+  endif()
 endfunction()
 
 function(add_lab lab)
@@ -145,7 +157,8 @@ function(add_lab lab)
   if(EXISTS ${PROJECT_SOURCE_DIR}/solutions/${lab})
     _wb_lab_variant(${lab} ${nn} solution "_solution" ${PROJECT_SOURCE_DIR}/solutions/${lab})
     _wb_register_tests(${lab} ${nn} solution lab${nn}_solution_tests "${ids}")
-    file(GLOB mutants CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tests/mutants/${lab}/*.mutant)
+    file(GLOB mutants CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tests/mutants/${lab}/*.mutant
+                                        ${PROJECT_SOURCE_DIR}/tests/mutants/${lab}/*.perturbation)
     foreach(m IN LISTS mutants)
       _wb_add_mutant(${lab} ${nn} ${m})
     endforeach()

@@ -21,7 +21,8 @@ std::vector<std::string> g_glErrors;
 // portability warnings are printed once so students see them without drowning in them.
 void APIENTRY onGlDebug(GLenum source, GLenum type, GLuint, GLenum severity, GLsizei,
                         const GLchar* message, const void*) {
-  if (type == GL_DEBUG_TYPE_ERROR && source != GL_DEBUG_SOURCE_SHADER_COMPILER) {
+  if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;  // Program reports these with file:line
+  if (type == GL_DEBUG_TYPE_ERROR) {
     std::lock_guard<std::mutex> lock(g_errorMutex);
     g_glErrors.emplace_back(message);
   } else if (severity == GL_DEBUG_SEVERITY_HIGH) {

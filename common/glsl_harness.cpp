@@ -4,6 +4,7 @@
 #include "common/shader.hpp"
 #include "common/variant.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -36,7 +37,10 @@ std::pair<size_t, size_t> chunk(const std::string& text, const std::string& id) 
 std::string takeExerciseChunk(const std::string& base, const std::string& donor, const std::string& id) {
   auto [b0, b1] = chunk(base, id);
   auto [d0, d1] = chunk(donor, id);
-  return base.substr(0, b0) + donor.substr(d0, d1 - d0) + base.substr(b1);
+  // #line keeps compiler messages on the donor's (the student's) line numbers inside the chunk.
+  auto lineAt = [](const std::string& t, size_t pos) { return 1 + std::count(t.begin(), t.begin() + long(pos), '\n'); };
+  return base.substr(0, b0) + "#line " + std::to_string(lineAt(donor, d0)) + "\n" + donor.substr(d0, d1 - d0) +
+         "#line " + std::to_string(lineAt(base, b1)) + "\n" + base.substr(b1);
 }
 
 std::string isolatedExerciseSource(const std::string& file, const std::string& id) {

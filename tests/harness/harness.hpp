@@ -58,7 +58,7 @@ std::vector<glm::vec4> runExercise(const std::string& id, const std::string& bod
 
 /// Layer 2: renders a golden case with the lab itself (`--headless --size 256x256` plus `args`),
 /// with exercise `id` isolated, and compares its visibility with tests/golden/<lab>/<name>.pfm.
-/// A pixel fails when it differs by more than `tolerance`; the test fails when more than
+/// A pixel fails when no reference pixel in its 3x3 neighbourhood is within `tolerance`; the test fails when more than
 /// `maxFailingFraction` of pixels fail. On failure it writes reference, result and diff PNGs.
 void expectSceneMatchesGolden(const std::string& id, const std::string& name, const std::vector<std::string>& args,
                               float tolerance, double maxFailingFraction);

@@ -32,12 +32,15 @@ void main() {
     vec3 coord = worldToShadowCoord(u_lightViewProj, v_world);
     if (!wbIsTodo(coord)) visibility = hardShadow(u_shadowMap, coord, u_bias);
   }
-  o_visibility = visibility;
   if (wbIsTodo(visibility)) {  // an exercise is missing: show it, never fake a shadow
+    o_visibility = visibility;
     o_color = vec4(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), 1.0);
     return;
   }
   vec3 toLight = u_lightType == 0 ? -u_lightDir : normalize(u_lightPos - v_world);
+  // A surface turned away from the light is unlit whatever the map says (an attached shadow); the
+  // visibility buffer records that instead of the map's noisy answer there.
+  o_visibility = dot(n, toLight) > 0.0 ? visibility : 0.0;
   float cone = u_lightType == 0 ? 1.0 : smoothstep(u_spotCos, mix(u_spotCos, 1.0, 0.1), dot(-toLight, u_lightDir));
   o_color = vec4(wbShade(albedo, n, toLight, vec3(cone), visibility), 1.0);
 }
