@@ -457,16 +457,18 @@ void Lab::frame(float dt) {
     drawShell();
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    if (i.screenshotRequested) {  // the window as the user sees it, UI included
+    // In a window, --screenshot captures the last frame as the user sees it, UI included.
+    const bool lastFrame = i.opt.frames > 0 && i.frameIndex == i.opt.frames - 1 && !i.opt.screenshot.empty();
+    if (i.screenshotRequested || lastFrame) {
       i.screenshotRequested = false;
       std::vector<uint8_t> px(size_t(frameSize_.x) * frameSize_.y * 4);
       glReadPixels(0, 0, frameSize_.x, frameSize_.y, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
       char stamp[32];
       std::time_t t = std::time(nullptr);
       std::strftime(stamp, sizeof stamp, "%Y%m%d_%H%M%S", std::localtime(&t));
-      i.lastScreenshot = "screenshots/lab" + number_ + "_" + stamp + ".png";
+      i.lastScreenshot = lastFrame ? i.opt.screenshot : "screenshots/lab" + number_ + "_" + stamp + ".png";
       writePng(i.lastScreenshot, frameSize_.x, frameSize_.y, px);
-      std::printf("screenshot: %s\n", fs::absolute(i.lastScreenshot).string().c_str());
+      std::printf("wrote %s\n", fs::absolute(i.lastScreenshot).string().c_str());
     }
     i.ctx->endFrame();
   }
@@ -476,8 +478,7 @@ void Lab::drawShell() {
   auto& i = *impl_;
   const ImVec4 red(1, 0.4f, 0.4f, 1), green(0.5f, 1, 0.5f, 1), yellow(1, 0.85f, 0.3f, 1), grey(0.7f, 0.7f, 0.7f, 1);
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(400, 0), ImGuiCond_FirstUseEver);
-  ImGui::Begin(("Lab " + number_ + ": " + title_).c_str());
+  ImGui::Begin(("Lab " + number_ + ": " + title_).c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   ImGui::TextColored(grey, "%s | %.1f fps | %dx%d", Context::renderer().c_str(), ImGui::GetIO().Framerate, frameSize_.x, frameSize_.y);
   ImGui::Separator();
   ImGui::Text("Exercises (run ./workbook check %s to grade them)", number_.c_str());
@@ -492,7 +493,11 @@ void Lab::drawShell() {
     }
     ImGui::TextColored(c, "%s  %-16s %s", e.id.c_str(), label, e.title.c_str());
     if (!e.message.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.message.c_str());
-    if (e.state == ExerciseState::Failed) ImGui::TextWrapped("    %s", e.message.c_str());
+    if (e.state == ExerciseState::Failed) {
+      ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40);
+      ImGui::TextColored(red, "    %s", e.message.c_str());
+      ImGui::PopTextWrapPos();
+    }
   }
   if (!i.passes.empty()) {
     ImGui::Separator();
@@ -503,21 +508,25 @@ void Lab::drawShell() {
     if (!p.error().empty()) {
       ImGui::Separator();
       ImGui::TextColored(red, "Shader error (the last good version is still running):");
-      ImGui::TextWrapped("%s", p.error().c_str());
+      ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40);
+      ImGui::TextUnformatted(p.error().c_str());
+      ImGui::PopTextWrapPos();
     }
   for (const auto& w : warnings_) ImGui::TextColored(yellow, "warning: %s", w.c_str());
   if (!i.lastScreenshot.empty()) ImGui::TextColored(grey, "saved %s", i.lastScreenshot.c_str());
   ImGui::TextColored(grey, "drag: orbit | wheel: zoom | 1-9: bookmarks | F12: screenshot");
   ImGui::End();
 
-  ImGui::SetNextWindowPos(ImVec2(float(frameSize_.x) - 368, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Settings");
+  ImGui::SetNextWindowPos(ImVec2(float(frameSize_.x) - 8, 8), ImGuiCond_FirstUseEver, ImVec2(1, 0));
+  ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Settings", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::PushItemWidth(150);
   const int oldBookmark = bookmark_;
   settings.ui();
   if (bookmark_ != oldBookmark && bookmark_ < int(scene.cameras.size())) camera.pose = scene.cameras[bookmark_];
   lightIndex = std::min(lightIndex, int(scene.lights.size()) - 1);
   ui();
+  ImGui::PopItemWidth();
   ImGui::End();
 }
 
@@ -525,7 +534,7 @@ void Lab::writeOutputs() {
   auto& i = *impl_;
   glBindFramebuffer(GL_READ_FRAMEBUFFER, i.fbo.id());
   const int w = frameSize_.x, h = frameSize_.y;
-  if (!i.opt.screenshot.empty()) {
+  if (!i.opt.screenshot.empty() && !i.imgui) {  // (a window writes its own, with the UI)
     std::vector<uint8_t> px(size_t(w) * h * 4);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
