@@ -1,0 +1,185 @@
+// The framework's promises to students and lecturers: bad input gets a clear message and the right
+// exit code, never a crash; compiler errors name the original file and line; a broken shader edit
+// keeps the last good program.
+#include "common/scene.hpp"
+#include "common/settings.hpp"
+#include "common/shader.hpp"
+#include "common/variant.hpp"
+#include "tests/harness/harness.hpp"
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+  fs::path dir = fs::path(wb::variant::kOutputDir) / name;
+  fs::create_directories(dir);
+  return dir;
+}
+
+void writeFile(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+// Loads a scene and returns the error message ("" if it loaded).
+std::string sceneError(const std::string& json) {
+  const fs::path p = scratch("scenes") / "scene.json";
+  writeFile(p, json);
+  try {
+    wb::Scene::load(p);
+  } catch (const wb::UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+struct LabResult {
+  int code;
+  std::string output;
+};
+
+// Runs the sample lab with `args` and no display; captures its exit code and output.
+LabResult runLab(const std::string& args) {
+  const fs::path log = scratch("cli") / "out.log";
+  const std::string cmd = "cd " + scratch("cli").string() + " && env -u DISPLAY -u WAYLAND_DISPLAY timeout 60 " +
+                          wb::variant::kLabExe + " " + args + " >" + log.string() + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  std::ifstream in(log);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), s.str()};
+}
+
+}  // namespace
+
+TEST(Scene, ErrorsNameTheFileTheFieldAndTheReason) {
+  EXPECT_NE(sceneError(R"({"objects": [)").find("not valid JSON"), std::string::npos);
+  EXPECT_NE(sceneError(R"({"lights": [{}]})").find("objects: missing"), std::string::npos);
+  const std::string shape = sceneError(R"({"objects": [{"shape": "cube"}], "lights": [{}]})");
+  EXPECT_NE(shape.find("scene.json: objects[0].shape: unknown shape 'cube'"), std::string::npos) << shape;
+  const std::string vec = sceneError(R"({"objects": [{"shape": "box", "position": [1, 2]}], "lights": [{}]})");
+  EXPECT_NE(vec.find("objects[0].position: must be [x, y, z]"), std::string::npos) << vec;
+  const std::string light = sceneError(R"({"objects": [{"shape": "box"}], "lights": [{"type": "area"}]})");
+  EXPECT_NE(light.find("lights[0].type: unknown light type 'area'"), std::string::npos) << light;
+  const std::string tex = sceneError(R"({"objects": [{"shape": "plane", "texture": "nope.png"}], "lights": [{}]})");
+  EXPECT_NE(tex.find("objects[0].texture: file"), std::string::npos) << tex;
+  EXPECT_NE(sceneError(R"({"objects": [{"shape": "sphere", "radius": -1}], "lights": [{}]})").find("radius: must be greater than 0"),
+            std::string::npos);
+}
+
+TEST(Scene, TheCanonicalSceneLoadsWithBoundsAndBookmarks) {
+  const wb::Scene s = wb::Scene::load(fs::path(wb::variant::kSourceDir) / "scenes/depth_map.json");
+  EXPECT_GE(s.objects.size(), 8u);  // the tree expands into a trunk and a canopy
+  EXPECT_EQ(s.lights.size(), 2u);
+  EXPECT_GE(s.cameras.size(), 2u);
+  EXPECT_NEAR(s.boundsMin.y, 0, 1e-5);  // everything stands on the ground plane
+  EXPECT_NEAR(s.boundsMax.x - s.boundsMin.x, 16, 1e-4);  // the 16 m ground sets the width
+}
+
+TEST(Settings, AssignChecksNamesTypesAndRanges) {
+  wb::Settings s;
+  float f = 0.5f;
+  int i = 1, c = 0;
+  bool b = false;
+  s.add("a.float", f, 0, 1, "");
+  s.add("a.int", i, 0, 4, "");
+  s.add("a.bool", b, "");
+  s.addChoice("a.choice", c, {"x", "y"}, "");
+  s.assign("a.float=0.25");
+  s.assign("a.int=3");
+  s.assign("a.bool=on");
+  s.assign("a.choice=y");
+  EXPECT_EQ(f, 0.25f);
+  EXPECT_EQ(i, 3);
+  EXPECT_TRUE(b);
+  EXPECT_EQ(c, 1);
+  EXPECT_THROW(s.assign("a.float=2"), wb::UsageError);
+  EXPECT_THROW(s.assign("a.int=1.5"), wb::UsageError);
+  EXPECT_THROW(s.assign("a.choice=z"), wb::UsageError);
+  EXPECT_THROW(s.assign("nope=1"), wb::UsageError);
+  EXPECT_THROW(s.assign("a.int"), wb::UsageError);
+}
+
+TEST(Shader, IncludesAreExpandedAndErrorsMapToTheOriginalFileAndLine) {
+  const fs::path dir = scratch("include");
+  writeFile(dir / "inc.glsl", "// line 1\nfloat helper() { return 1.0; }\n");
+  const std::string main = "#version 450 core\n#include \"inc.glsl\"\nvoid main() {}\n";
+  const wb::ShaderSource src = wb::preprocessShader(main, dir / "main.comp", "#define X 1\n", {dir});
+  ASSERT_EQ(src.files.size(), 2u);
+  EXPECT_EQ(src.files[1], dir / "inc.glsl");
+  EXPECT_NE(src.text.find("#define X 1"), std::string::npos);
+  EXPECT_NE(src.text.find("float helper()"), std::string::npos);
+  const std::string mapped = wb::mapShaderLog("1:2(7): error: syntax error\n", src.files);
+  EXPECT_NE(mapped.find((dir / "inc.glsl").string() + ":2: error"), std::string::npos) << mapped;
+  EXPECT_THROW(wb::preprocessShader("#include \"missing.glsl\"\n", dir / "x", "", {dir}), wb::Error);
+}
+
+// A broken edit keeps the last good program and reports file:line; fixing it rebuilds.
+using wb::test::GlTest;
+TEST_F(GlTest, HotReloadKeepsTheLastGoodProgram) {
+  const fs::path dir = scratch("reload");
+  const fs::path file = dir / "reload_test.comp";
+  const std::string good = "#version 450 core\nlayout(local_size_x = 1) in;\nvoid main() {}\n";
+  writeFile(file, good);
+  setenv("WB_SHADER_OVERLAY", dir.c_str(), 1);
+  wb::Program p = wb::Program::tryLoad({{GL_COMPUTE_SHADER, "reload_test.comp"}});
+  ASSERT_TRUE(p.ok()) << p.error();
+  const GLuint first = p.id();
+  writeFile(file, "#version 450 core\nlayout(local_size_x = 1) in;\nvoid main() { oops }\n");
+  fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(2));
+  EXPECT_FALSE(p.reloadIfChanged());
+  EXPECT_EQ(p.id(), first) << "the last good program must stay in use";
+  EXPECT_NE(p.error().find(file.string() + ":3"), std::string::npos) << p.error();
+  writeFile(file, good);
+  fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(4));
+  EXPECT_TRUE(p.reloadIfChanged());
+  EXPECT_TRUE(p.error().empty());
+  unsetenv("WB_SHADER_OVERLAY");
+}
+
+// The lab command line: bad input gets one clear line and exit code 2, no display exit code 3.
+TEST(CommandLine, BadInputGetsAClearMessageAndExitCode2) {
+  struct Case {
+    std::string args, expect;
+  } cases[] = {
+      {"--bogus", "unknown option '--bogus'"},
+      {"--headless --scene missing.json", "scene file 'missing.json' not found"},
+      {"--headless --set shadow.map_size=16384", "bad value '16384' for shadow.map_size"},
+      {"--headless --set nope=1", "unknown setting 'nope'"},
+      {"--headless --size 12x", "bad --size '12x'"},
+      {"--headless --frames 0", "bad --frames '0'"},
+      {"--headless --set light.index=5", "has 2 light(s)"},
+  };
+  for (const auto& c : cases) {
+    const LabResult r = runLab(c.args);
+    EXPECT_EQ(r.code, 2) << c.args << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.expect), std::string::npos) << c.args << "\n" << r.output;
+  }
+  const fs::path bad = scratch("cli") / "malformed.json";
+  writeFile(bad, R"({"objects": [{"shape": "box", "size": "big"}], "lights": [{}]})");
+  const LabResult r = runLab("--headless --scene " + bad.string());
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("objects[0].size: must be [x, y, z]"), std::string::npos) << r.output;
+}
+
+TEST(CommandLine, NoDisplayExplainsAndOffersHeadless) {
+  const LabResult r = runLab("");
+  EXPECT_EQ(r.code, 3) << r.output;
+  EXPECT_NE(r.output.find("--headless"), std::string::npos) << r.output;
+}
+
+TEST(CommandLine, HeadlessRunWritesTheRequestedFiles) {
+  const fs::path dir = scratch("cli");
+  const LabResult r = runLab("--headless --size 64x48 --screenshot shot.png --dump-visibility vis.pfm --bench bench.csv --frames 3");
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "shot.png"));
+  const wb::FloatImage vis = wb::readPfm(dir / "vis.pfm");
+  EXPECT_EQ(vis.width, 64);
+  EXPECT_EQ(vis.height, 48);
+  EXPECT_NE(r.output.find("fps"), std::string::npos) << r.output;
+}
