@@ -19,7 +19,7 @@ struct CameraBookmark {
 
 /// Orbits a target point; mouse drags change yaw/pitch, the wheel changes distance.
 struct OrbitCamera {
-  CameraBookmark pose;  ///< the current parameters
+  CameraBookmark pose;      ///< the current parameters
   float nearPlane = 0.1f;   ///< near clip distance
   float farPlane = 200.0f;  ///< far clip distance
 

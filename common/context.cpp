@@ -19,8 +19,8 @@ std::vector<std::string> g_glErrors;
 
 // KHR_debug: errors are collected (tests fail on them, debug builds stop on them); performance and
 // portability warnings are printed once so students see them without drowning in them.
-void APIENTRY onGlDebug(GLenum source, GLenum type, GLuint, GLenum severity, GLsizei,
-                        const GLchar* message, const void*) {
+void APIENTRY onGlDebug(GLenum source, GLenum type, GLuint, GLenum severity, GLsizei, const GLchar* message,
+                        const void*) {
   if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;  // Program reports these with file:line
   if (type == GL_DEBUG_TYPE_ERROR) {
     std::lock_guard<std::mutex> lock(g_errorMutex);
@@ -41,13 +41,13 @@ void requireGl45(const char* how) {
   glGetIntegerv(GL_MAJOR_VERSION, &major);
   glGetIntegerv(GL_MINOR_VERSION, &minor);
   if (major * 10 + minor < 45)
-    throw ContextError(std::string(how) + " gave OpenGL " + std::to_string(major) + "." +
-                       std::to_string(minor) + ", but the workbook needs 4.5 core. " +
+    throw ContextError(std::string(how) + " gave OpenGL " + std::to_string(major) + "." + std::to_string(minor) +
+                       ", but the workbook needs 4.5 core. " +
                        "Install Mesa (sudo apt-get install libgl1-mesa-dri libegl-mesa0).");
 }
 
 class EglContext final : public Context {
-public:
+ public:
   explicit EglContext(bool debug) {
     // glad's EGL loader runs twice: once for the client entry points, once for the display's.
     if (!gladLoaderLoadEGL(EGL_NO_DISPLAY))
@@ -60,18 +60,26 @@ public:
     if (display_ == EGL_NO_DISPLAY) display_ = eglGetDisplay(EGL_DEFAULT_DISPLAY);
     EGLint major = 0, minor = 0;
     if (display_ == EGL_NO_DISPLAY || !eglInitialize(display_, &major, &minor))
-      throw ContextError("no EGL display (surfaceless Mesa). Install it with: "
-                         "sudo apt-get install libegl-mesa0 libgl1-mesa-dri");
+      throw ContextError(
+          "no EGL display (surfaceless Mesa). Install it with: "
+          "sudo apt-get install libegl-mesa0 libgl1-mesa-dri");
     gladLoaderLoadEGL(display_);
     eglBindAPI(EGL_OPENGL_API);
-    const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                              EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                              EGL_CONTEXT_OPENGL_DEBUG, debug ? EGL_TRUE : EGL_FALSE, EGL_NONE};
+    const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                              4,
+                              EGL_CONTEXT_MINOR_VERSION,
+                              5,
+                              EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                              EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                              EGL_CONTEXT_OPENGL_DEBUG,
+                              debug ? EGL_TRUE : EGL_FALSE,
+                              EGL_NONE};
     context_ = eglCreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
-    if (context_ == EGL_NO_CONTEXT ||
-        !eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
-      throw ContextError("EGL could not create a surfaceless OpenGL 4.5 core context "
-                         "(EGL error 0x" + hex(eglGetError()) + "). Mesa 20 or newer provides one.");
+    if (context_ == EGL_NO_CONTEXT || !eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+      throw ContextError(
+          "EGL could not create a surfaceless OpenGL 4.5 core context "
+          "(EGL error 0x" +
+          hex(eglGetError()) + "). Mesa 20 or newer provides one.");
     if (!gladLoaderLoadGL()) throw ContextError("cannot load OpenGL entry points through EGL");
     requireGl45("EGL");
   }
@@ -82,7 +90,7 @@ public:
   }
   bool headless() const override { return true; }
 
-private:
+ private:
   static std::string hex(EGLint v) {
     char buf[16];
     std::snprintf(buf, sizeof buf, "%04x", static_cast<unsigned>(v));
@@ -95,17 +103,17 @@ private:
 std::string g_glfwError;
 
 class GlfwContext final : public Context {
-public:
+ public:
   explicit GlfwContext(const ContextOptions& o) {
     glfwSetErrorCallback([](int, const char* msg) { g_glfwError = msg; });
     const char* display = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if ((!display || !*display) && (!wayland || !*wayland))
-      throw ContextError("no display found (DISPLAY and WAYLAND_DISPLAY are not set). "
-                         "Add --headless to render to a file instead, e.g. --headless --screenshot out.png");
+      throw ContextError(
+          "no display found (DISPLAY and WAYLAND_DISPLAY are not set). "
+          "Add --headless to render to a file instead, e.g. --headless --screenshot out.png");
     if (!glfwInit())
-      throw ContextError("cannot open the display (" + g_glfwError +
-                         "). Add --headless to render to a file instead.");
+      throw ContextError("cannot open the display (" + g_glfwError + "). Add --headless to render to a file instead.");
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -139,7 +147,7 @@ public:
     return s;
   }
 
-private:
+ private:
   GLFWwindow* window_ = nullptr;
 };
 

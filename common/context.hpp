@@ -23,7 +23,7 @@ struct ContextOptions {
 
 /// A current GL context; destroying it releases the window or EGL display.
 class Context {
-public:
+ public:
   /// Creates the context and makes it current; throws wb::ContextError with a hint on failure.
   static std::unique_ptr<Context> create(const ContextOptions& options);
   virtual ~Context() = default;

@@ -34,8 +34,10 @@ Framebuffer makeFramebuffer(std::initializer_list<GLuint> colors, GLuint depth) 
     glNamedFramebufferTexture(id, attachment, c, 0);
     buffers.push_back(attachment);
   }
-  if (buffers.empty()) glNamedFramebufferDrawBuffer(id, GL_NONE);
-  else glNamedFramebufferDrawBuffers(id, GLsizei(buffers.size()), buffers.data());
+  if (buffers.empty())
+    glNamedFramebufferDrawBuffer(id, GL_NONE);
+  else
+    glNamedFramebufferDrawBuffers(id, GLsizei(buffers.size()), buffers.data());
   if (depth) glNamedFramebufferTexture(id, GL_DEPTH_ATTACHMENT, depth, 0);
   const GLenum status = glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)

@@ -13,7 +13,7 @@ namespace wb {
 /// A move-only owner of one GL object name; `Delete` frees it.
 template <void (*Delete)(GLuint)>
 class GlObject {
-public:
+ public:
   GlObject() = default;
   /// Takes ownership of `id`.
   explicit GlObject(GLuint id) : id_(id) {}
@@ -36,7 +36,7 @@ public:
     id_ = 0;
   }
 
-private:
+ private:
   GLuint id_ = 0;
 };
 
@@ -57,8 +57,7 @@ using ProgramId = GlObject<gldelete::program>;        ///< owns a program object
 using Query = GlObject<gldelete::query>;              ///< owns a query object
 
 /// Creates a 2D texture with storage (one level) and the given filter and wrap modes.
-Texture makeTexture2D(GLenum internalFormat, int w, int h, GLenum filter = GL_NEAREST,
-                      GLenum wrap = GL_CLAMP_TO_EDGE);
+Texture makeTexture2D(GLenum internalFormat, int w, int h, GLenum filter = GL_NEAREST, GLenum wrap = GL_CLAMP_TO_EDGE);
 /// Creates a buffer with `bytes` of immutable storage, optionally filled from `data`.
 Buffer makeBuffer(size_t bytes, const void* data, GLbitfield flags = GL_DYNAMIC_STORAGE_BIT);
 /// Creates a framebuffer with the given color attachments and optional depth attachment; throws

@@ -54,9 +54,8 @@ std::string isolatedExerciseSource(const std::string& file, const std::string& i
   return takeExerciseChunk(slurp(solution), mine, id);
 }
 
-std::vector<glm::vec4> runGlslKernel(const std::string& functions, const fs::path& origin,
-                                     const std::string& body, int count, int stride,
-                                     const std::vector<glm::vec4>& inputs,
+std::vector<glm::vec4> runGlslKernel(const std::string& functions, const fs::path& origin, const std::string& body,
+                                     int count, int stride, const std::vector<glm::vec4>& inputs,
                                      const std::vector<GLuint>& textures) {
   std::ostringstream src;
   src << "#version 450 core\n"
@@ -69,7 +68,8 @@ std::vector<glm::vec4> runGlslKernel(const std::string& functions, const fs::pat
   // student's file and line; the harness's main() gets the next number.
   ShaderSource pre = preprocessShader(functions, origin, "", shaderSearchPath());
   src << "#define IN(k) wb_in[wb_i * " << stride << " + (k)]\n"
-      << "#line 1 0\n" << pre.text << "\n#line 1 " << pre.files.size() << "\n"
+      << "#line 1 0\n"
+      << pre.text << "\n#line 1 " << pre.files.size() << "\n"
       << "void main() {\n  int wb_i = int(gl_GlobalInvocationID.x);\n  if (wb_i >= wb_count) return;\n"
       << "  vec4 result = vec4(0.0);\n  " << body << "\n  wb_out[wb_i] = result;\n}\n";
   pre.files.emplace_back("<harness main>");

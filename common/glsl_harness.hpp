@@ -30,8 +30,7 @@ std::string isolatedExerciseSource(const std::string& file, const std::string& i
 /// uniforms wb_tex0, wb_tex1, ... Throws wb::Error with file:line on a compile error.
 std::vector<glm::vec4> runGlslKernel(const std::string& functions, const std::filesystem::path& origin,
                                      const std::string& body, int count, int stride,
-                                     const std::vector<glm::vec4>& inputs,
-                                     const std::vector<GLuint>& textures = {});
+                                     const std::vector<glm::vec4>& inputs, const std::vector<GLuint>& textures = {});
 
 /// True if `v` is the GLSL stubs' sentinel WB_TODO (see shaders/wb/exercise.glsl).
 inline bool isTodo(float v) { return v <= -1e29f; }

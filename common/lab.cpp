@@ -73,7 +73,9 @@ struct Lab::Impl {
   std::vector<std::pair<std::string, PassStats>> passes;
   std::string activePass;
   // GLSL exercise probes: id, file, expression; and the file times they were last run against.
-  struct Probe { std::string id, file, expr; };
+  struct Probe {
+    std::string id, file, expr;
+  };
   std::vector<Probe> probes;
   std::map<fs::path, fs::file_time_type> probedFiles;
   bool strictGl = false, imgui = false, screenshotRequested = false;
@@ -95,7 +97,10 @@ struct Lab::Impl {
     for (auto it = pending.begin(); it != pending.end();) {
       GLint ready = 0;
       if (!wait) glGetQueryObjectiv(it->second, GL_QUERY_RESULT_AVAILABLE, &ready);
-      if (!wait && !ready) { ++it; continue; }
+      if (!wait && !ready) {
+        ++it;
+        continue;
+      }
       GLuint64 ns = 0;
       glGetQueryObjectui64v(it->second, GL_QUERY_RESULT, &ns);
       PassStats& s = stats(it->first);
@@ -123,14 +128,16 @@ Lab::Lab(std::string defaultScene) : impl_(std::make_unique<Impl>()), defaultSce
     auto j = nlohmann::json::parse(readText(manifest));
     number_ = j.at("lab").get<std::string>().substr(0, 2);
     title_ = j.at("title").get<std::string>();
-    for (const auto& e : j.at("exercises")) exercises_.push_back({e.at("id").get<std::string>(), e.at("title").get<std::string>(), {}, {}});
+    for (const auto& e : j.at("exercises"))
+      exercises_.push_back({e.at("id").get<std::string>(), e.at("title").get<std::string>(), {}, {}});
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "warning: cannot read %s (%s); the exercise list will be empty\n",
-                 manifest.string().c_str(), e.what());
+    std::fprintf(stderr, "warning: cannot read %s (%s); the exercise list will be empty\n", manifest.string().c_str(),
+                 e.what());
   }
   std::vector<std::string> sizes;
   for (int s : kMapSizes) sizes.push_back(std::to_string(s));
-  settings.addChoice("shadow.map_size", mapSizeChoice_, sizes, "shadow map resolution in texels (clamped to GL_MAX_TEXTURE_SIZE)");
+  settings.addChoice("shadow.map_size", mapSizeChoice_, sizes,
+                     "shadow map resolution in texels (clamped to GL_MAX_TEXTURE_SIZE)");
   settings.add("shadow.bias", bias_, 0.0f, 0.05f, "constant depth bias subtracted from the receiver depth");
   settings.add("light.index", lightIndex, 0, 7, "which light of the scene casts shadows");
   settings.addChoice("debug.view", debugView_, {"camera", "light"}, "see the scene from the camera or from the light");
@@ -210,8 +217,10 @@ void Lab::bindFrameTarget() const {
 Lab::PassTimer::PassTimer(Lab& lab, const char* name) : lab_(lab) {
   auto& i = *lab.impl_;
   GLuint q = 0;
-  if (i.freeQueries.empty()) glGenQueries(1, &q);
-  else q = i.freeQueries.back(), i.freeQueries.pop_back();
+  if (i.freeQueries.empty())
+    glGenQueries(1, &q);
+  else
+    q = i.freeQueries.back(), i.freeQueries.pop_back();
   i.pending.emplace_back(name, q);
   glBeginQuery(GL_TIME_ELAPSED, q);
 }
@@ -255,13 +264,20 @@ int Lab::main(int argc, char** argv) {
       if (arg == "--help" || arg == "-h") {
         std::printf(kUsage, exe.c_str(), defaultScene_.c_str());
         return 0;
-      } else if (arg == "--headless") i.opt.headless = true;
-      else if (arg == "--list-settings") i.opt.listSettings = true;
-      else if (arg == "--scene") i.opt.scene = value();
-      else if (arg == "--set") sets.push_back(value());
-      else if (arg == "--screenshot") i.opt.screenshot = value();
-      else if (arg == "--dump-visibility") i.opt.visibility = value();
-      else if (arg == "--bench") i.opt.bench = value();
+      } else if (arg == "--headless")
+        i.opt.headless = true;
+      else if (arg == "--list-settings")
+        i.opt.listSettings = true;
+      else if (arg == "--scene")
+        i.opt.scene = value();
+      else if (arg == "--set")
+        sets.push_back(value());
+      else if (arg == "--screenshot")
+        i.opt.screenshot = value();
+      else if (arg == "--dump-visibility")
+        i.opt.visibility = value();
+      else if (arg == "--bench")
+        i.opt.bench = value();
       else if (arg == "--size") {
         std::string v = value();
         char x = 0, extra = 0;
@@ -279,7 +295,8 @@ int Lab::main(int argc, char** argv) {
           throw UsageError("bad --frames '" + v + "': expected a whole number of at least 1");
         }
       } else
-        throw UsageError("unknown option '" + arg + "'; accepted: --headless --scene --size --set --frames "
+        throw UsageError("unknown option '" + arg +
+                         "'; accepted: --headless --scene --size --set --frames "
                          "--screenshot --dump-visibility --bench --list-settings --help");
     }
     for (const auto& s : sets) settings.assign(s);
@@ -288,7 +305,8 @@ int Lab::main(int argc, char** argv) {
       settings.list(std::cout);
       return 0;
     }
-    const fs::path scenePath = i.opt.scene.empty() ? fs::path(variant::kSourceDir) / defaultScene_ : fs::path(i.opt.scene);
+    const fs::path scenePath =
+        i.opt.scene.empty() ? fs::path(variant::kSourceDir) / defaultScene_ : fs::path(i.opt.scene);
     scene = Scene::load(scenePath);
     if (lightIndex >= int(scene.lights.size()))
       throw UsageError("light.index=" + std::to_string(lightIndex) + " but " + scenePath.string() + " has " +
@@ -311,10 +329,10 @@ int Lab::main(int argc, char** argv) {
     GLuint vao = 0;
     glCreateVertexArrays(1, &vao);
     i.emptyVao = VertexArray(vao);
-    i.lines = std::make_unique<Program>(std::vector<ShaderStage>{{GL_VERTEX_SHADER, "wb/frustum.vert"},
-                                                                 {GL_FRAGMENT_SHADER, "wb/flat.frag"}});
-    i.inset = std::make_unique<Program>(std::vector<ShaderStage>{{GL_VERTEX_SHADER, "wb/fullscreen.vert"},
-                                                                 {GL_FRAGMENT_SHADER, "wb/depth_view.frag"}});
+    i.lines = std::make_unique<Program>(
+        std::vector<ShaderStage>{{GL_VERTEX_SHADER, "wb/frustum.vert"}, {GL_FRAGMENT_SHADER, "wb/flat.frag"}});
+    i.inset = std::make_unique<Program>(
+        std::vector<ShaderStage>{{GL_VERTEX_SHADER, "wb/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "wb/depth_view.frag"}});
     gpuScene = std::make_unique<GpuScene>(scene);
     if (!i.ctx->headless()) {
       IMGUI_CHECKVERSION();
@@ -337,7 +355,8 @@ int Lab::main(int argc, char** argv) {
       if (!i.opt.bench.empty() || i.opt.headless) glFinish();
       auto end = std::chrono::steady_clock::now();
       const bool record = i.frameIndex >= i.warmup;
-      if (record && i.frameIndex > 0) i.wallSum += std::chrono::duration<double, std::milli>(end - now).count(), ++i.wallCount;
+      if (record && i.frameIndex > 0)
+        i.wallSum += std::chrono::duration<double, std::milli>(end - now).count(), ++i.wallCount;
       i.collect(i.ctx->headless(), record);
       for (const auto& e : takeGlErrors()) {
         if (i.strictGl) throw Error("OpenGL error: " + e);
@@ -381,7 +400,8 @@ void Lab::frame(float dt) {
     i.lastMouse = mouse;
     if (!io.WantCaptureKeyboard) {
       for (int k = 0; k < 9; ++k)
-        if (i.pressed(win, GLFW_KEY_1 + k) && k < int(scene.cameras.size())) bookmark_ = k, camera.pose = scene.cameras[k];
+        if (i.pressed(win, GLFW_KEY_1 + k) && k < int(scene.cameras.size()))
+          bookmark_ = k, camera.pose = scene.cameras[k];
       if (i.pressed(win, GLFW_KEY_F12) || i.pressed(win, GLFW_KEY_P)) i.screenshotRequested = true;
     }
     frameSize_ = glm::max(i.ctx->framebufferSize(), glm::ivec2(16));
@@ -451,7 +471,8 @@ void Lab::frame(float dt) {
   if (i.imgui) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, i.fbo.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glBlitFramebuffer(0, 0, frameSize_.x, frameSize_.y, 0, 0, frameSize_.x, frameSize_.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitFramebuffer(0, 0, frameSize_.x, frameSize_.y, 0, 0, frameSize_.x, frameSize_.y, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, frameSize_.x, frameSize_.y);
     drawShell();
@@ -479,17 +500,25 @@ void Lab::drawShell() {
   const ImVec4 red(1, 0.4f, 0.4f, 1), green(0.5f, 1, 0.5f, 1), yellow(1, 0.85f, 0.3f, 1), grey(0.7f, 0.7f, 0.7f, 1);
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
   ImGui::Begin(("Lab " + number_ + ": " + title_).c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-  ImGui::TextColored(grey, "%s | %.1f fps | %dx%d", Context::renderer().c_str(), ImGui::GetIO().Framerate, frameSize_.x, frameSize_.y);
+  ImGui::TextColored(grey, "%s | %.1f fps | %dx%d", Context::renderer().c_str(), ImGui::GetIO().Framerate, frameSize_.x,
+                     frameSize_.y);
   ImGui::Separator();
   ImGui::Text("Exercises (run ./workbook check %s to grade them)", number_.c_str());
   for (const auto& e : exercises_) {
     const char* label = "not run yet";
     ImVec4 c = grey;
     switch (e.state) {
-      case ExerciseState::Implemented: label = "done", c = green; break;
-      case ExerciseState::NotImplemented: label = "not implemented", c = yellow; break;
-      case ExerciseState::Failed: label = "error", c = red; break;
-      case ExerciseState::Unknown: break;
+      case ExerciseState::Implemented:
+        label = "done", c = green;
+        break;
+      case ExerciseState::NotImplemented:
+        label = "not implemented", c = yellow;
+        break;
+      case ExerciseState::Failed:
+        label = "error", c = red;
+        break;
+      case ExerciseState::Unknown:
+        break;
     }
     ImGui::TextColored(c, "%s  %-16s %s", e.id.c_str(), label, e.title.c_str());
     if (!e.message.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.message.c_str());
@@ -558,12 +587,12 @@ void Lab::writeOutputs() {
     std::printf("  %-14s %10s %10s %10s\n", "pass", "mean ms", "min ms", "max ms");
     for (const auto& [name, s] : i.passes) {
       const double mean = s.count ? s.sum / s.count : 0;
-      csv << "lab" << number_ << ",\"" << Context::renderer() << "\"," << w << "x" << h << "," << name << ","
-          << mean << "," << s.min << "," << s.max << "," << s.count << "\n";
+      csv << "lab" << number_ << ",\"" << Context::renderer() << "\"," << w << "x" << h << "," << name << "," << mean
+          << "," << s.min << "," << s.max << "," << s.count << "\n";
       std::printf("  %-14s %10.3f %10.3f %10.3f\n", name.c_str(), mean, s.min, s.max);
     }
-    csv << "lab" << number_ << ",\"" << Context::renderer() << "\"," << w << "x" << h << ",frame_wall,"
-        << frameMs << ",,," << i.wallCount << "\n";
+    csv << "lab" << number_ << ",\"" << Context::renderer() << "\"," << w << "x" << h << ",frame_wall," << frameMs
+        << ",,," << i.wallCount << "\n";
     std::printf("  %-14s %10.3f   => %.1f fps\nwrote %s\n", "frame (wall)", frameMs, frameMs > 0 ? 1000 / frameMs : 0.0,
                 fs::absolute(i.opt.bench).string().c_str());
   }

@@ -27,10 +27,10 @@ enum class ExerciseState { Unknown, Implemented, NotImplemented, Failed };
 
 /// One row of the info panel.
 struct ExerciseStatus {
-  std::string id;       ///< "01.3"
-  std::string title;    ///< from the lab's exercises.json
+  std::string id;                                ///< "01.3"
+  std::string title;                             ///< from the lab's exercises.json
   ExerciseState state = ExerciseState::Unknown;  ///< last observed state
-  std::string message;  ///< why it is not implemented or failed
+  std::string message;                           ///< why it is not implemented or failed
 };
 
 /// What the shared debug views need to know about the current shadow-casting light.
@@ -44,7 +44,7 @@ struct LightView {
 
 /// Base class of every lab. Override the hooks; use the protected helpers.
 class Lab {
-public:
+ public:
   /// @param defaultScene scene file relative to the repository root. The lab's number, title and
   /// exercise list come from its exercises.json, the one list shared with the tests and grading.
   explicit Lab(std::string defaultScene);
@@ -52,7 +52,7 @@ public:
   /// Runs the lab with the shared command line; returns the process exit code.
   int main(int argc, char** argv);
 
-protected:
+ protected:
   /// Creates GL resources; called once after the context and scene exist. Read it as a table of contents.
   virtual void init() = 0;
   /// Advances animation by `dt` seconds (fixed 1/60 s in headless runs, so captures repeat).
@@ -103,25 +103,25 @@ protected:
 
   /// Times the GPU work of one pass until the returned object is destroyed (GL_TIME_ELAPSED).
   class PassTimer {
-  public:
+   public:
     PassTimer(Lab& lab, const char* name);
     ~PassTimer();
     PassTimer(const PassTimer&) = delete;
     PassTimer& operator=(const PassTimer&) = delete;
 
-  private:
+   private:
     Lab& lab_;
   };
   /// Starts timing a pass: `auto t = timePass("shadow");`.
   PassTimer timePass(const char* name) { return PassTimer(*this, name); }
 
-  Settings settings;         ///< this lab's tunables (register them in the constructor)
-  Scene scene;               ///< the loaded scene file
+  Settings settings;                   ///< this lab's tunables (register them in the constructor)
+  Scene scene;                         ///< the loaded scene file
   std::unique_ptr<GpuScene> gpuScene;  ///< the scene on the GPU
-  OrbitCamera camera;        ///< the viewer's camera
-  int lightIndex = 0;        ///< which scene light casts shadows (setting light.index)
+  OrbitCamera camera;                  ///< the viewer's camera
+  int lightIndex = 0;                  ///< which scene light casts shadows (setting light.index)
 
-private:
+ private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
   void frame(float dt);
@@ -134,7 +134,7 @@ private:
   LightView light_;
   int mapSizeChoice_ = 1;  // index into 512..8192
   float bias_ = 0.004f;
-  int debugView_ = 0;      // 0 = camera, 1 = light
+  int debugView_ = 0;  // 0 = camera, 1 = light
   bool showMap_ = false, showFrustum_ = false;
   int bookmark_ = 0;
   std::list<Program> programs_;

@@ -1,8 +1,8 @@
 #include "common/mesh.hpp"
 
 #include <glm/gtc/constants.hpp>
-#include <utility>
 #include <glm/gtc/matrix_transform.hpp>
+#include <utility>
 
 namespace wb {
 namespace {
@@ -113,11 +113,9 @@ MeshData makeTorus(float R, float r, int major, int minor) {
 
 MeshData makeBench() {
   MeshData m;
-  auto add = [&m](glm::vec3 centre, glm::vec3 half) {
-    m.append(makeBox(half), glm::translate(glm::mat4(1), centre));
-  };
-  add({0, 0.45f, 0}, {1.0f, 0.04f, 0.3f});        // seat: light leaks under it in the filter labs
-  add({0, 0.85f, -0.28f}, {1.0f, 0.2f, 0.03f});   // back rest
+  auto add = [&m](glm::vec3 centre, glm::vec3 half) { m.append(makeBox(half), glm::translate(glm::mat4(1), centre)); };
+  add({0, 0.45f, 0}, {1.0f, 0.04f, 0.3f});       // seat: light leaks under it in the filter labs
+  add({0, 0.85f, -0.28f}, {1.0f, 0.2f, 0.03f});  // back rest
   for (float x : {-0.9f, 0.9f})
     for (float z : {-0.25f, 0.25f}) add({x, 0.2f, z}, {0.05f, 0.2f, 0.05f});  // legs
   return m;

@@ -44,14 +44,14 @@ MeshData makeTreeCanopy();
 
 /// Geometry on the GPU, drawn as indexed triangles.
 class Mesh {
-public:
+ public:
   Mesh() = default;
   /// Uploads `data` (attributes 0 = position, 1 = normal, 2 = uv).
   explicit Mesh(const MeshData& data);
   /// Draws the whole mesh with the bound program.
   void draw() const;
 
-private:
+ private:
   VertexArray vao_;
   Buffer vbo_, ibo_;
   GLsizei count_ = 0;

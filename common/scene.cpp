@@ -2,9 +2,9 @@
 
 #include "common/error.hpp"
 
+#include <stb_image.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
-#include <stb_image.h>
 
 #include <fstream>
 #include <map>
@@ -17,7 +17,7 @@ namespace {
 
 // Reads fields of one JSON object and names the file and field in every error.
 class Fields {
-public:
+ public:
   Fields(const json& j, std::string where, const fs::path& file) : j_(j), where_(std::move(where)), file_(file) {
     if (!j_.is_object()) fail("", "must be an object {...}");
   }
@@ -54,7 +54,7 @@ public:
     return glm::normalize(d);
   }
 
-private:
+ private:
   const json& j_;
   std::string where_;
   const fs::path& file_;
@@ -82,8 +82,7 @@ MeshData shapeMesh(const std::string& shape, const Fields& f) {
   if (shape == "bench") return makeBench();
   if (shape == "tree_trunk") return makeTreeTrunk();
   if (shape == "tree_canopy") return makeTreeCanopy();
-  f.fail("shape", "unknown shape '" + shape +
-                      "' (expected plane, box, sphere, cylinder, torus, bench or tree)");
+  f.fail("shape", "unknown shape '" + shape + "' (expected plane, box, sphere, cylinder, torus, bench or tree)");
 }
 
 }  // namespace

@@ -16,8 +16,8 @@ namespace wb {
 
 /// Surface appearance: a colour and an optional RGBA texture whose alpha is alpha-tested.
 struct Material {
-  glm::vec3 color{0.8f};              ///< albedo (multiplies the texture)
-  std::filesystem::path texture;      ///< absolute path, or empty for none
+  glm::vec3 color{0.8f};          ///< albedo (multiplies the texture)
+  std::filesystem::path texture;  ///< absolute path, or empty for none
 };
 
 /// One object: its geometry already in object space, a model matrix and a material.
@@ -45,10 +45,10 @@ struct Light {
 
 /// A loaded scene file.
 struct Scene {
-  std::filesystem::path path;          ///< the file it came from
-  std::vector<SceneObject> objects;    ///< everything drawn
-  std::vector<Light> lights;           ///< at least one
-  std::vector<CameraBookmark> cameras; ///< at least one
+  std::filesystem::path path;            ///< the file it came from
+  std::vector<SceneObject> objects;      ///< everything drawn
+  std::vector<Light> lights;             ///< at least one
+  std::vector<CameraBookmark> cameras;   ///< at least one
   glm::vec3 boundsMin{0}, boundsMax{0};  ///< world-space bounds of all objects
 
   /// Loads and validates a scene; throws wb::UsageError naming the file, the field and the reason.
@@ -57,14 +57,14 @@ struct Scene {
 
 /// A scene on the GPU: one mesh and texture per object.
 class GpuScene {
-public:
+ public:
   /// Uploads every object and loads the textures (stb_image); throws wb::UsageError on a bad image.
   explicit GpuScene(const Scene& scene);
   /// Draws every object with `program`, setting u_model, u_color and u_hasTexture and binding the
   /// object's texture to unit `textureUnit` (a white texel when it has none).
   void draw(const Program& program, int textureUnit = 1) const;
 
-private:
+ private:
   struct Item {
     Mesh mesh;
     glm::mat4 model;

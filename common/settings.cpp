@@ -11,19 +11,32 @@ namespace wb {
 namespace {
 std::string valueString(const Setting& s) {
   switch (s.kind) {
-    case Setting::Kind::Float: { std::ostringstream o; o << *static_cast<float*>(s.value); return o.str(); }
-    case Setting::Kind::Int: return std::to_string(*static_cast<int*>(s.value));
-    case Setting::Kind::Bool: return *static_cast<bool*>(s.value) ? "true" : "false";
-    case Setting::Kind::Choice: return s.choices[*static_cast<int*>(s.value)];
+    case Setting::Kind::Float: {
+      std::ostringstream o;
+      o << *static_cast<float*>(s.value);
+      return o.str();
+    }
+    case Setting::Kind::Int:
+      return std::to_string(*static_cast<int*>(s.value));
+    case Setting::Kind::Bool:
+      return *static_cast<bool*>(s.value) ? "true" : "false";
+    case Setting::Kind::Choice:
+      return s.choices[*static_cast<int*>(s.value)];
   }
   return "";
 }
 std::string accepted(const Setting& s) {
   std::ostringstream o;
   switch (s.kind) {
-    case Setting::Kind::Float: o << "a number in [" << s.min << ", " << s.max << "]"; break;
-    case Setting::Kind::Int: o << "an integer in [" << int(s.min) << ", " << int(s.max) << "]"; break;
-    case Setting::Kind::Bool: o << "true or false"; break;
+    case Setting::Kind::Float:
+      o << "a number in [" << s.min << ", " << s.max << "]";
+      break;
+    case Setting::Kind::Int:
+      o << "an integer in [" << int(s.min) << ", " << int(s.max) << "]";
+      break;
+    case Setting::Kind::Bool:
+      o << "true or false";
+      break;
     case Setting::Kind::Choice:
       o << "one of";
       for (const auto& c : s.choices) o << " " << c;
@@ -72,9 +85,12 @@ void Settings::assign(const std::string& a) {
       break;
     }
     case Setting::Kind::Bool:
-      if (text == "true" || text == "1" || text == "on") *static_cast<bool*>(s.value) = true;
-      else if (text == "false" || text == "0" || text == "off") *static_cast<bool*>(s.value) = false;
-      else throw bad();
+      if (text == "true" || text == "1" || text == "on")
+        *static_cast<bool*>(s.value) = true;
+      else if (text == "false" || text == "0" || text == "off")
+        *static_cast<bool*>(s.value) = false;
+      else
+        throw bad();
       break;
     case Setting::Kind::Choice: {
       auto it = std::find(s.choices.begin(), s.choices.end(), text);
@@ -95,14 +111,23 @@ bool Settings::ui(const std::string& prefix) const {
     if (s.name.rfind(prefix, 0) != 0) continue;
     const char* n = s.name.c_str();
     switch (s.kind) {
-      case Setting::Kind::Float: changed |= ImGui::SliderFloat(n, static_cast<float*>(s.value), s.min, s.max); break;
-      case Setting::Kind::Int: changed |= ImGui::SliderInt(n, static_cast<int*>(s.value), int(s.min), int(s.max)); break;
-      case Setting::Kind::Bool: changed |= ImGui::Checkbox(n, static_cast<bool*>(s.value)); break;
+      case Setting::Kind::Float:
+        changed |= ImGui::SliderFloat(n, static_cast<float*>(s.value), s.min, s.max);
+        break;
+      case Setting::Kind::Int:
+        changed |= ImGui::SliderInt(n, static_cast<int*>(s.value), int(s.min), int(s.max));
+        break;
+      case Setting::Kind::Bool:
+        changed |= ImGui::Checkbox(n, static_cast<bool*>(s.value));
+        break;
       case Setting::Kind::Choice: {
         int* v = static_cast<int*>(s.value);
         if (ImGui::BeginCombo(n, s.choices[*v].c_str())) {
           for (int i = 0; i < int(s.choices.size()); ++i)
-            if (ImGui::Selectable(s.choices[i].c_str(), i == *v)) { *v = i; changed = true; }
+            if (ImGui::Selectable(s.choices[i].c_str(), i == *v)) {
+              *v = i;
+              changed = true;
+            }
           ImGui::EndCombo();
         }
       }

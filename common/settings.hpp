@@ -21,7 +21,7 @@ struct Setting {
 
 /// The settings registry of one lab.
 class Settings {
-public:
+ public:
   /// Registers a float in [min, max].
   void add(const std::string& name, float& v, float min, float max, const std::string& help);
   /// Registers an int in [min, max].
@@ -40,7 +40,7 @@ public:
   /// All settings in registration order.
   const std::vector<Setting>& all() const { return settings_; }
 
-private:
+ private:
   const Setting& find(const std::string& name) const;
   std::vector<Setting> settings_;
 };

@@ -33,8 +33,7 @@ std::vector<fs::path> splitPath(const std::string& s) {
 
 // Appends `text` (source number `index`) to `out`, expanding includes depth-first.
 void expand(const std::string& text, const fs::path& origin, const std::string& defines,
-            const std::vector<fs::path>& path, ShaderSource& src, std::ostringstream& out,
-            int depth) {
+            const std::vector<fs::path>& path, ShaderSource& src, std::ostringstream& out, int depth) {
   if (depth > 16) throw Error(origin.string() + ": #include nested too deeply (a cycle?)");
   const int index = static_cast<int>(src.files.size());
   src.files.push_back(origin);
@@ -51,7 +50,10 @@ void expand(const std::string& text, const fs::path& origin, const std::string& 
       // stub that sits next to the including file.
       fs::path target = origin.parent_path() / m[1].str();
       for (const auto& dir : path)
-        if (fs::exists(dir / m[1].str())) { target = dir / m[1].str(); break; }
+        if (fs::exists(dir / m[1].str())) {
+          target = dir / m[1].str();
+          break;
+        }
       if (!fs::exists(target)) target = findShaderFile(m[1].str(), path);
       expand(readFile(target), target, "", path, src, out, depth + 1);
       out << "#line " << line + 1 << " " << index << "\n";
@@ -65,8 +67,7 @@ void expand(const std::string& text, const fs::path& origin, const std::string& 
 
 std::vector<fs::path> shaderSearchPath() {
   std::vector<fs::path> path;
-  if (const char* overlay = std::getenv("WB_SHADER_OVERLAY"); overlay && *overlay)
-    path = splitPath(overlay);
+  if (const char* overlay = std::getenv("WB_SHADER_OVERLAY"); overlay && *overlay) path = splitPath(overlay);
   for (auto& p : splitPath(variant::kShaderPath)) path.push_back(p);
   return path;
 }
@@ -80,8 +81,8 @@ fs::path findShaderFile(const std::string& name, const std::vector<fs::path>& pa
   throw Error("shader file '" + name + "' not found; searched:" + searched);
 }
 
-ShaderSource preprocessShader(const std::string& text, const fs::path& origin,
-                              const std::string& defines, const std::vector<fs::path>& path) {
+ShaderSource preprocessShader(const std::string& text, const fs::path& origin, const std::string& defines,
+                              const std::vector<fs::path>& path) {
   ShaderSource src;
   std::ostringstream out;
   expand(text, origin, defines, path, src, out, 0);
@@ -99,8 +100,7 @@ std::string mapShaderLog(const std::string& log, const std::vector<fs::path>& fi
     if (std::regex_search(s, m, posRe)) {
       const size_t file = std::stoul(m[1].matched ? m[1].str() : m[4].str());
       const std::string line = m[1].matched ? m[2].str() : m[5].str();
-      if (file < files.size())
-        s = m.prefix().str() + files[file].string() + ":" + line + m.suffix().str();
+      if (file < files.size()) s = m.prefix().str() + files[file].string() + ":" + line + m.suffix().str();
     }
     out += s + "\n";
   }

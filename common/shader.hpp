@@ -22,8 +22,7 @@ struct ShaderStage {
 std::vector<std::filesystem::path> shaderSearchPath();
 
 /// Finds `name` on `path` (first match wins); throws wb::Error naming every folder searched.
-std::filesystem::path findShaderFile(const std::string& name,
-                                     const std::vector<std::filesystem::path>& path);
+std::filesystem::path findShaderFile(const std::string& name, const std::vector<std::filesystem::path>& path);
 
 /// GLSL text after include expansion, with the list of files it came from (index = source number).
 struct ShaderSource {
@@ -33,8 +32,7 @@ struct ShaderSource {
 
 /// Expands `text` (read from `origin`): inserts `defines` after `#version`, resolves `#include`
 /// relative to the including file and then on `path`, and emits `#line` so errors map back.
-ShaderSource preprocessShader(const std::string& text, const std::filesystem::path& origin,
-                              const std::string& defines,
+ShaderSource preprocessShader(const std::string& text, const std::filesystem::path& origin, const std::string& defines,
                               const std::vector<std::filesystem::path>& path);
 
 /// Rewrites compiler positions such as "2:14(3): error" into "shaders/exercise.glsl:14: error".
@@ -43,7 +41,7 @@ std::string mapShaderLog(const std::string& log, const std::vector<std::filesyst
 /// A linked program built from files. Construction throws wb::Error (with file:line) on failure;
 /// reloadIfChanged() never throws and keeps the last good program.
 class Program {
-public:
+ public:
   Program() = default;
   /// Builds the program from files on shaderSearchPath(), with `defines` injected.
   Program(std::vector<ShaderStage> stages, std::string defines = {});
@@ -68,13 +66,13 @@ public:
 
   /// Sets a uniform of the bound program by name (missing names are ignored, as GL does).
   void set(const char* name, float v) const;
-  void set(const char* name, int v) const;                ///< @copydoc set(const char*,float) const
-  void set(const char* name, const glm::vec2& v) const;   ///< @copydoc set(const char*,float) const
-  void set(const char* name, const glm::vec3& v) const;   ///< @copydoc set(const char*,float) const
-  void set(const char* name, const glm::vec4& v) const;   ///< @copydoc set(const char*,float) const
-  void set(const char* name, const glm::mat4& v) const;   ///< @copydoc set(const char*,float) const
+  void set(const char* name, int v) const;               ///< @copydoc set(const char*,float) const
+  void set(const char* name, const glm::vec2& v) const;  ///< @copydoc set(const char*,float) const
+  void set(const char* name, const glm::vec3& v) const;  ///< @copydoc set(const char*,float) const
+  void set(const char* name, const glm::vec4& v) const;  ///< @copydoc set(const char*,float) const
+  void set(const char* name, const glm::mat4& v) const;  ///< @copydoc set(const char*,float) const
 
-private:
+ private:
   ProgramId build();  // throws wb::Error
   std::vector<ShaderStage> stages_;
   std::string defines_;

@@ -23,8 +23,7 @@ glm::mat4 directionalLightViewProj([[maybe_unused]] const glm::vec3& direction,
 }
 
 // EXERCISE 01.2
-glm::mat4 spotLightViewProj([[maybe_unused]] const glm::vec3& position,
-                            [[maybe_unused]] const glm::vec3& direction,
+glm::mat4 spotLightViewProj([[maybe_unused]] const glm::vec3& position, [[maybe_unused]] const glm::vec3& direction,
                             [[maybe_unused]] float halfAngleDeg, [[maybe_unused]] float nearPlane,
                             [[maybe_unused]] float farPlane) {
   throw wb::NotImplemented("01.2 spotLightViewProj");

@@ -9,13 +9,12 @@ namespace lab01 {
 /// an orthographic box fitted around the axis-aligned scene bounds [boundsMin, boundsMax].
 /// Every point of the bounds must land inside clip space [-1, 1]³, and depth must grow along
 /// `direction` (the light looks the way it travels).
-glm::mat4 directionalLightViewProj(const glm::vec3& direction, const glm::vec3& boundsMin,
-                                   const glm::vec3& boundsMax);
+glm::mat4 directionalLightViewProj(const glm::vec3& direction, const glm::vec3& boundsMin, const glm::vec3& boundsMax);
 
 /// EXERCISE 01.2: the view-projection of a spot light at `position` pointing along `direction`,
 /// with a square perspective frustum whose half-angle is `halfAngleDeg` degrees, and the given
 /// near and far planes.
-glm::mat4 spotLightViewProj(const glm::vec3& position, const glm::vec3& direction, float halfAngleDeg,
-                            float nearPlane, float farPlane);
+glm::mat4 spotLightViewProj(const glm::vec3& position, const glm::vec3& direction, float halfAngleDeg, float nearPlane,
+                            float farPlane);
 
 }  // namespace lab01

@@ -15,12 +15,12 @@
 namespace {
 
 class DepthMapLab : public wb::Lab {
-public:
+ public:
   DepthMapLab() : Lab("scenes/depth_map.json") {
     settings.add("alpha.cutoff", alphaCutoff, 0.0f, 1.0f, "leaf texels with lower alpha cast no shadow");
   }
 
-protected:
+ protected:
   void init() override {
     depthProgram = &loadProgram({{GL_VERTEX_SHADER, "depth.vert"}, {GL_FRAGMENT_SHADER, "depth.frag"}});
     sceneProgram = &loadProgram({{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "scene.frag"}});
@@ -41,12 +41,15 @@ protected:
     }
     // The light's camera: an orthographic box around the scene, or the spot's perspective cone.
     const bool spot = light.type == wb::LightType::Spot;
-    const bool ready = spot ? attempt("01.2", [&] {
-      lightViewProj = lab01::spotLightViewProj(light.position, light.direction, light.angle, light.nearPlane, light.farPlane);
-    })
-                            : light.type == wb::LightType::Directional && attempt("01.1", [&] {
-                                lightViewProj = lab01::directionalLightViewProj(light.direction, scene.boundsMin, scene.boundsMax);
-                              });
+    const bool ready =
+        spot ? attempt("01.2",
+                       [&] {
+                         lightViewProj = lab01::spotLightViewProj(light.position, light.direction, light.angle,
+                                                                  light.nearPlane, light.farPlane);
+                       })
+             : light.type == wb::LightType::Directional && attempt("01.1", [&] {
+                 lightViewProj = lab01::directionalLightViewProj(light.direction, scene.boundsMin, scene.boundsMax);
+               });
     resizeShadowMap(shadowMapSize());
 
     // PASS 1: depth from the light. No colour target; only the depth buffer is kept.
@@ -80,7 +83,7 @@ protected:
     gpuScene->draw(p);
   }
 
-private:
+ private:
   // (Re)allocates the depth texture when the map size setting changes.
   void resizeShadowMap(int size) {
     if (size == mapSize && shadowMap.id()) return;

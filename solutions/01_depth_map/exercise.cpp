@@ -1,7 +1,6 @@
 // Lab 01 C++ exercises: reference solution.
 #include "exercise.hpp"
 
-
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
@@ -13,8 +12,7 @@ glm::vec3 upFor(const glm::vec3& d) { return std::abs(d.y) > 0.99f ? glm::vec3(1
 }  // namespace
 
 // EXERCISE 01.1
-glm::mat4 directionalLightViewProj(const glm::vec3& direction, const glm::vec3& boundsMin,
-                                   const glm::vec3& boundsMax) {
+glm::mat4 directionalLightViewProj(const glm::vec3& direction, const glm::vec3& boundsMin, const glm::vec3& boundsMax) {
   const glm::vec3 d = glm::normalize(direction);
   const glm::vec3 centre = 0.5f * (boundsMin + boundsMax);
   // The light's axes, from a view that looks along d through the centre.
@@ -32,8 +30,8 @@ glm::mat4 directionalLightViewProj(const glm::vec3& direction, const glm::vec3& 
 }
 
 // EXERCISE 01.2
-glm::mat4 spotLightViewProj(const glm::vec3& position, const glm::vec3& direction, float halfAngleDeg,
-                            float nearPlane, float farPlane) {
+glm::mat4 spotLightViewProj(const glm::vec3& position, const glm::vec3& direction, float halfAngleDeg, float nearPlane,
+                            float farPlane) {
   const glm::vec3 d = glm::normalize(direction);
   const glm::mat4 view = glm::lookAt(position, position + d, upFor(d));
   const glm::mat4 projection = glm::perspective(glm::radians(2 * halfAngleDeg), 1.0f, nearPlane, farPlane);

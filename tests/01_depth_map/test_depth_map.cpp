@@ -44,10 +44,12 @@ TEST(Lab01, Ex01_1_DirectionalFitContainsAndHugsTheBounds) {
       }
       for (int a = 0; a < 3; ++a) {
         ASSERT_TRUE(lo[a] >= -1 - 1e-4 && hi[a] <= 1 + 1e-4)
-            << "WRONG: a corner of the scene bounds falls outside the light's clip volume on axis " << "xyz"[a]
-            << " (range " << lo[a] << " .. " << hi[a] << ") for direction (" << d.x << ", " << d.y << ", " << d.z << ")";
-        ASSERT_GE(hi[a] - lo[a], 1.8) << "WRONG: the fit is loose on axis " << "xyz"[a] << ": the bounds use only "
-                                      << (hi[a] - lo[a]) / 2 * 100 << "% of clip space";
+            << "WRONG: a corner of the scene bounds falls outside the light's clip volume on axis "
+            << "xyz"[a] << " (range " << lo[a] << " .. " << hi[a] << ") for direction (" << d.x << ", " << d.y << ", "
+            << d.z << ")";
+        ASSERT_GE(hi[a] - lo[a], 1.8) << "WRONG: the fit is loose on axis "
+                                      << "xyz"[a] << ": the bounds use only " << (hi[a] - lo[a]) / 2 * 100
+                                      << "% of clip space";
       }
     }
 }
@@ -59,7 +61,8 @@ TEST(Lab01, Ex01_1_DirectionalIsOrthographicAlongTheLight) {
     glm::mat4 m;
     WB_TRY_EXERCISE(m = lab01::directionalLightViewProj(d, kBoxes[0].lo, kBoxes[0].hi));
     const glm::vec4 w = glm::transpose(m)[3];
-    ASSERT_NEAR(glm::length(glm::vec4(w.x, w.y, w.z, w.w - 1)), 0, 1e-5) << "WRONG: the last row is not (0,0,0,1): not orthographic";
+    ASSERT_NEAR(glm::length(glm::vec4(w.x, w.y, w.z, w.w - 1)), 0, 1e-5)
+        << "WRONG: the last row is not (0,0,0,1): not orthographic";
     const glm::vec3 p(0.5f, 1, -0.5f), q = p + glm::normalize(d) * 2.0f;
     const glm::dvec3 a = project(m, p), b = project(m, q);
     EXPECT_NEAR(a.x, b.x, 1e-4) << "WRONG: moving along the light direction changed the map x";
@@ -99,9 +102,12 @@ TEST(Lab01, Ex01_2_SpotFrustumMatchesTheCone) {
 // --- 01.3: world -> shadow-map coordinates (GLSL) -------------------------------------------------
 // Reference, in double: clip = M p; ndc = clip.xyz / clip.w; coord = ndc * 0.5 + 0.5.
 TEST_F(GlTest, Ex01_3_WorldToShadowCoordMatchesReference) {
-  std::vector<glm::mat4> mats = {glm::ortho(-9.f, 9.f, -7.f, 7.f, 0.f, 30.f) * glm::lookAt(glm::vec3(4, 12, 3), glm::vec3(0), glm::vec3(0, 1, 0)),
-                                 glm::perspective(glm::radians(80.f), 1.f, 1.f, 20.f) * glm::lookAt(glm::vec3(4, 6.5, 5), glm::vec3(0), glm::vec3(0, 1, 0)),
-                                 glm::perspective(glm::radians(50.f), 1.f, 0.5f, 40.f) * glm::lookAt(glm::vec3(-3, 8, -6), glm::vec3(1, 0, 1), glm::vec3(0, 1, 0))};
+  std::vector<glm::mat4> mats = {
+      glm::ortho(-9.f, 9.f, -7.f, 7.f, 0.f, 30.f) * glm::lookAt(glm::vec3(4, 12, 3), glm::vec3(0), glm::vec3(0, 1, 0)),
+      glm::perspective(glm::radians(80.f), 1.f, 1.f, 20.f) *
+          glm::lookAt(glm::vec3(4, 6.5, 5), glm::vec3(0), glm::vec3(0, 1, 0)),
+      glm::perspective(glm::radians(50.f), 1.f, 0.5f, 40.f) *
+          glm::lookAt(glm::vec3(-3, 8, -6), glm::vec3(1, 0, 1), glm::vec3(0, 1, 0))};
   std::vector<glm::vec4> in;
   std::vector<glm::dvec3> want;
   for (const auto& m : mats)
@@ -117,7 +123,8 @@ TEST_F(GlTest, Ex01_3_WorldToShadowCoordMatchesReference) {
   for (size_t i = 0; i < want.size(); ++i)
     for (int a = 0; a < 3; ++a)
       ASSERT_NEAR(got[i][a], want[i][a], 1e-4 * (1 + std::abs(want[i][a])))
-          << "WRONG: coordinate " << "uvz"[a] << " of case " << i << " is " << got[i][a] << ", expected " << want[i][a];
+          << "WRONG: coordinate "
+          << "uvz"[a] << " of case " << i << " is " << got[i][a] << ", expected " << want[i][a];
 }
 
 // --- 01.4: the hard shadow test (GLSL) ------------------------------------------------------------
@@ -139,7 +146,8 @@ TEST_F(GlTest, Ex01_4_HardShadowComparesDepths) {
         want.push_back(z - bias <= depth[i] ? 1.0f : 0.0f);  // off = 0, bias = 0 is the tie: lit
       }
   std::vector<glm::vec4> got;
-  WB_RUN_GLSL(got, "01.4", "result = vec4(hardShadow(wb_tex0, IN(0).xyz, IN(0).w));", int(want.size()), 1, in, {map.id()});
+  WB_RUN_GLSL(got, "01.4", "result = vec4(hardShadow(wb_tex0, IN(0).xyz, IN(0).w));", int(want.size()), 1, in,
+              {map.id()});
   for (size_t i = 0; i < want.size(); ++i)
     ASSERT_EQ(got[i].x, want[i]) << "WRONG: point depth " << in[i].z << ", bias " << in[i].w << ", stored depth "
                                  << depth[i / 10] << ": expected " << (want[i] ? "lit (1)" : "shadowed (0)");
@@ -161,7 +169,8 @@ TEST_F(GlTest, Ex01_5_CasterCoverageFollowsAlpha) {
       want.push_back(rgba[4 * i + 3] / 255.0f >= cutoff ? 1.0f : 0.0f);
     }
   std::vector<glm::vec4> got;
-  WB_RUN_GLSL(got, "01.5", "result = vec4(casterCoverage(wb_tex0, IN(0).xy, IN(0).z));", int(want.size()), 1, in, {tex.id()});
+  WB_RUN_GLSL(got, "01.5", "result = vec4(casterCoverage(wb_tex0, IN(0).xy, IN(0).z));", int(want.size()), 1, in,
+              {tex.id()});
   for (size_t i = 0; i < want.size(); ++i)
     ASSERT_EQ(got[i].x, want[i]) << "WRONG: alpha " << int(rgba[4 * (i / 3) + 3]) << "/255 with cutoff " << in[i].z
                                  << " should give coverage " << want[i];
@@ -178,9 +187,15 @@ const std::vector<std::string> kSpot = {"--set", "light.index=1"};
 const std::vector<std::string> kTree = {"--set", "light.index=0", "--set", "camera.bookmark=1"};
 }  // namespace
 
-TEST(Lab01, Ex01_1_SceneDirectional) { wb::test::expectSceneMatchesGolden("01.1", "directional", kDirectional, kTol, kMaxFraction); }
+TEST(Lab01, Ex01_1_SceneDirectional) {
+  wb::test::expectSceneMatchesGolden("01.1", "directional", kDirectional, kTol, kMaxFraction);
+}
 TEST(Lab01, Ex01_2_SceneSpot) { wb::test::expectSceneMatchesGolden("01.2", "spot", kSpot, kTol, kMaxFraction); }
-TEST(Lab01, Ex01_3_SceneDirectional) { wb::test::expectSceneMatchesGolden("01.3", "directional", kDirectional, kTol, kMaxFraction); }
+TEST(Lab01, Ex01_3_SceneDirectional) {
+  wb::test::expectSceneMatchesGolden("01.3", "directional", kDirectional, kTol, kMaxFraction);
+}
 TEST(Lab01, Ex01_3_SceneSpot) { wb::test::expectSceneMatchesGolden("01.3", "spot", kSpot, kTol, kMaxFraction); }
-TEST(Lab01, Ex01_4_SceneDirectional) { wb::test::expectSceneMatchesGolden("01.4", "directional", kDirectional, kTol, kMaxFraction); }
+TEST(Lab01, Ex01_4_SceneDirectional) {
+  wb::test::expectSceneMatchesGolden("01.4", "directional", kDirectional, kTol, kMaxFraction);
+}
 TEST(Lab01, Ex01_5_SceneTree) { wb::test::expectSceneMatchesGolden("01.5", "tree", kTree, kTol, kMaxFraction); }

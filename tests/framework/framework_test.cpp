@@ -68,7 +68,8 @@ TEST(Scene, ErrorsNameTheFileTheFieldAndTheReason) {
   EXPECT_NE(light.find("lights[0].type: unknown light type 'area'"), std::string::npos) << light;
   const std::string tex = sceneError(R"({"objects": [{"shape": "plane", "texture": "nope.png"}], "lights": [{}]})");
   EXPECT_NE(tex.find("objects[0].texture: file"), std::string::npos) << tex;
-  EXPECT_NE(sceneError(R"({"objects": [{"shape": "sphere", "radius": -1}], "lights": [{}]})").find("radius: must be greater than 0"),
+  EXPECT_NE(sceneError(R"({"objects": [{"shape": "sphere", "radius": -1}], "lights": [{}]})")
+                .find("radius: must be greater than 0"),
             std::string::npos);
 }
 
@@ -77,7 +78,7 @@ TEST(Scene, TheCanonicalSceneLoadsWithBoundsAndBookmarks) {
   EXPECT_GE(s.objects.size(), 8u);  // the tree expands into a trunk and a canopy
   EXPECT_EQ(s.lights.size(), 2u);
   EXPECT_GE(s.cameras.size(), 2u);
-  EXPECT_NEAR(s.boundsMin.y, 0, 1e-5);  // everything stands on the ground plane
+  EXPECT_NEAR(s.boundsMin.y, 0, 1e-5);                   // everything stands on the ground plane
   EXPECT_NEAR(s.boundsMax.x - s.boundsMin.x, 16, 1e-4);  // the 16 m ground sets the width
 }
 
@@ -175,7 +176,8 @@ TEST(CommandLine, NoDisplayExplainsAndOffersHeadless) {
 
 TEST(CommandLine, HeadlessRunWritesTheRequestedFiles) {
   const fs::path dir = scratch("cli");
-  const LabResult r = runLab("--headless --size 64x48 --screenshot shot.png --dump-visibility vis.pfm --bench bench.csv --frames 3");
+  const LabResult r =
+      runLab("--headless --size 64x48 --screenshot shot.png --dump-visibility vis.pfm --bench bench.csv --frames 3");
   EXPECT_EQ(r.code, 0) << r.output;
   EXPECT_TRUE(fs::exists(dir / "shot.png"));
   const wb::FloatImage vis = wb::readPfm(dir / "vis.pfm");

@@ -43,9 +43,12 @@ std::vector<uint8_t> diffImage(const FloatImage& ref, const FloatImage& got, flo
     const float r = ref.pixels[i], g = got.pixels[i];
     const auto grey = uint8_t(90 + 80 * std::clamp(r, 0.0f, 1.0f));
     p[0] = p[1] = p[2] = grey;
-    if (isTodo(g)) p[0] = 230, p[1] = 0, p[2] = 200;
-    else if (g < r - tol) p[0] = 255, p[1] = 40, p[2] = 40;
-    else if (g > r + tol) p[0] = 40, p[1] = 90, p[2] = 255;
+    if (isTodo(g))
+      p[0] = 230, p[1] = 0, p[2] = 200;
+    else if (g < r - tol)
+      p[0] = 255, p[1] = 40, p[2] = 40;
+    else if (g > r + tol)
+      p[0] = 40, p[1] = 90, p[2] = 255;
   }
   return rgba;
 }
@@ -90,12 +93,14 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
   const bool haveSolution = *variant::kSolutionDir != '\0' && !updatingGolden();
   if (haveSolution) {
     const std::string mine = slurp(findShaderFile("exercise.glsl", shaderSearchPath()));
-    if (mine.find("// EXERCISE " + id) != std::string::npos) exe = variant::kSolutionExe[0] ? variant::kSolutionExe : exe;
+    if (mine.find("// EXERCISE " + id) != std::string::npos)
+      exe = variant::kSolutionExe[0] ? variant::kSolutionExe : exe;
     std::ofstream(out / "exercise.glsl") << isolatedExerciseSource("exercise.glsl", id);
     env += "WB_SHADER_OVERLAY=" + quote(out.string()) + " ";
   }
   const fs::path pfm = out / "result.pfm", log = out / "lab.log";
-  std::string cmd = env + "timeout 120 " + quote(exe) + " --headless --size 256x256 --dump-visibility " + quote(pfm.string());
+  std::string cmd =
+      env + "timeout 120 " + quote(exe) + " --headless --size 256x256 --dump-visibility " + quote(pfm.string());
   for (const auto& a : args) cmd += " " + quote(a);
   fs::remove(pfm);
   const int status = std::system((cmd + " >" + quote(log.string()) + " 2>&1").c_str());
@@ -108,8 +113,9 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
       if (!l.empty()) last = l;
       if (cause.empty() && l.find(": error") != std::string::npos) cause = l;
     }
-    FAIL() << "ERROR: the lab " << (code == 124 ? "timed out" : "failed (exit " + std::to_string(code) + ")")
-           << ": " << (cause.empty() ? last : cause) << "\n" << slurp(log) << "command: " << cmd;
+    FAIL() << "ERROR: the lab " << (code == 124 ? "timed out" : "failed (exit " + std::to_string(code) + ")") << ": "
+           << (cause.empty() ? last : cause) << "\n"
+           << slurp(log) << "command: " << cmd;
   }
   // The app probes every exercise; a stub whose effect cannot be seen in pixels (an alpha test
   // that keeps everything) is still reported as not implemented.
@@ -128,7 +134,8 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
     std::printf("updated %s\n", golden.string().c_str());
     return;
   }
-  if (!fs::exists(golden)) FAIL() << "ERROR: no golden data " << golden << "; run ./workbook golden " << id.substr(0, 2);
+  if (!fs::exists(golden))
+    FAIL() << "ERROR: no golden data " << golden << "; run ./workbook golden " << id.substr(0, 2);
   const FloatImage ref = readPfm(golden);
   if (ref.width != got.width || ref.height != got.height) FAIL() << "ERROR: golden " << golden << " has another size";
   // A pixel fails when no reference pixel in its 3x3 neighbourhood is within `tolerance`: a shadow
@@ -137,7 +144,10 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
   for (int y = 0; y < ref.height; ++y)
     for (int x = 0; x < ref.width; ++x) {
       const float g = got.at(x, y);
-      if (isTodo(g)) { ++todo; continue; }
+      if (isTodo(g)) {
+        ++todo;
+        continue;
+      }
       bool near = false;
       for (int dy = -1; dy <= 1 && !near; ++dy)
         for (int dx = -1; dx <= 1 && !near; ++dx) {

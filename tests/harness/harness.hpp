@@ -5,8 +5,8 @@
 #include "common/error.hpp"
 #include "common/image.hpp"
 
-#include <glm/glm.hpp>
 #include <gtest/gtest.h>
+#include <glm/glm.hpp>
 
 #include <string>
 #include <vector>
@@ -15,11 +15,11 @@ namespace wb::test {
 
 /// Fixture for tests that need GL: one headless EGL context per process; fails on KHR_debug errors.
 class GlTest : public ::testing::Test {
-public:
+ public:
   /// Creates the shared context on first use and records GL_RENDERER as a test property.
   static void SetUpTestSuite();
 
-protected:
+ protected:
   /// Fails the test if the GL reported errors during it.
   void TearDown() override;
 };
@@ -36,24 +36,24 @@ std::vector<glm::vec4> runExercise(const std::string& id, const std::string& bod
                                    const std::vector<glm::vec4>& inputs, const std::vector<unsigned>& textures = {});
 
 /// Runs a C++ exercise call; a wb::NotImplemented becomes a "NOT IMPLEMENTED" failure.
-#define WB_TRY_EXERCISE(statement)                                                        \
-  try {                                                                                   \
-    statement;                                                                            \
-  } catch (const wb::NotImplemented& e) {                                                 \
-    FAIL() << e.what();                                                                   \
-  } catch (const std::exception& e) {                                                     \
-    FAIL() << "ERROR: the exercise threw: " << e.what();                                  \
+#define WB_TRY_EXERCISE(statement)                       \
+  try {                                                  \
+    statement;                                           \
+  } catch (const wb::NotImplemented& e) {                \
+    FAIL() << e.what();                                  \
+  } catch (const std::exception& e) {                    \
+    FAIL() << "ERROR: the exercise threw: " << e.what(); \
   }
 
 /// Runs a GLSL exercise kernel into `results`; a compile error or WB_TODO output ends the test.
-#define WB_RUN_GLSL(results, ...)                                                          \
-  try {                                                                                    \
-    results = ::wb::test::runExercise(__VA_ARGS__);                                        \
-  } catch (const std::exception& e) {                                                      \
-    FAIL() << "ERROR: " << e.what();                                                       \
-  }                                                                                        \
-  for (const auto& r : results)                                                            \
-    if (r.x <= -1e29f || r.y <= -1e29f || r.z <= -1e29f || r.w <= -1e29f)                  \
+#define WB_RUN_GLSL(results, ...)                                         \
+  try {                                                                   \
+    results = ::wb::test::runExercise(__VA_ARGS__);                       \
+  } catch (const std::exception& e) {                                     \
+    FAIL() << "ERROR: " << e.what();                                      \
+  }                                                                       \
+  for (const auto& r : results)                                           \
+    if (r.x <= -1e29f || r.y <= -1e29f || r.z <= -1e29f || r.w <= -1e29f) \
       FAIL() << "NOT IMPLEMENTED: the GLSL function still returns WB_TODO";
 
 /// Layer 2: renders a golden case with the lab itself (`--headless --size 256x256` plus `args`),

@@ -32,7 +32,8 @@ std::vector<ManifestEntry> readManifest() {
   std::ifstream in(fs::path(wb::variant::kLabDir) / "exercises.json");
   std::vector<ManifestEntry> out;
   const auto manifest = nlohmann::json::parse(in);  // keep it alive while iterating
-  for (const auto& e : manifest.at("exercises")) out.push_back({e.at("id").get<std::string>(), e.at("title").get<std::string>(), e.at("file").get<std::string>()});
+  for (const auto& e : manifest.at("exercises"))
+    out.push_back({e.at("id").get<std::string>(), e.at("title").get<std::string>(), e.at("file").get<std::string>()});
   return out;
 }
 
@@ -45,7 +46,7 @@ std::string exerciseOf(const std::string& testName) {
 
 // Collects the first failure of each test and prints the per-exercise table at the end.
 class CheckListener : public ::testing::EmptyTestEventListener {
-public:
+ public:
   explicit CheckListener(bool expectStubs) : expectStubs_(expectStubs) {}
   int exitCode = 0;
 
@@ -59,7 +60,9 @@ public:
     for (const char* k : {"NOT IMPLEMENTED", "WRONG", "ERROR"}) at = std::min(at, full.find(k));
     const std::string msg = at == std::string::npos ? "WRONG: " + full : full.substr(at);
     // Keep the most serious message of the exercise: ERROR > WRONG > NOT IMPLEMENTED.
-    auto rank = [](const std::string& m) { return m.rfind("ERROR", 0) == 0 ? 3 : m.rfind("NOT IMPLEMENTED", 0) == 0 ? 1 : 2; };
+    auto rank = [](const std::string& m) {
+      return m.rfind("ERROR", 0) == 0 ? 3 : m.rfind("NOT IMPLEMENTED", 0) == 0 ? 1 : 2;
+    };
     if (slot.empty() || rank(msg) > rank(slot)) slot = msg;
   }
   void OnTestProgramEnd(const ::testing::UnitTest&) override {
@@ -69,9 +72,10 @@ public:
     int done = 0;
     for (const auto& e : manifest) {
       const std::string msg = first_.count(e.id) ? first_[e.id] : "";
-      std::string status = msg.empty() ? "done" : msg.rfind("NOT IMPLEMENTED", 0) == 0 ? "not implemented"
-                                                : msg.rfind("ERROR", 0) == 0             ? "error"
-                                                                                          : "wrong";
+      std::string status = msg.empty()                            ? "done"
+                           : msg.rfind("NOT IMPLEMENTED", 0) == 0 ? "not implemented"
+                           : msg.rfind("ERROR", 0) == 0           ? "error"
+                                                                  : "wrong";
       done += msg.empty();
       if (expectStubs_ && status != "not implemented") exitCode = 1;
       std::string first = msg.substr(0, msg.find('\n'));
@@ -82,10 +86,12 @@ public:
     }
     if (!expectStubs_ && done != int(manifest.size())) exitCode = 1;
     std::printf("  %d of %zu exercises done.%s\n", done, manifest.size(),
-                expectStubs_ ? (exitCode ? " Some stubs are not reported as NOT IMPLEMENTED." : " Every stub reports NOT IMPLEMENTED.") : "");
+                expectStubs_ ? (exitCode ? " Some stubs are not reported as NOT IMPLEMENTED."
+                                         : " Every stub reports NOT IMPLEMENTED.")
+                             : "");
   }
 
-private:
+ private:
   bool expectStubs_;
   std::string current_;  // the exercise of the running test
   std::map<std::string, std::string> first_;
@@ -104,7 +110,8 @@ TEST(Manifest, EveryExerciseHasTestsAndEveryTestAnExercise) {
     if (std::string(suite->name()) == "Manifest") continue;
     for (int t = 0; t < suite->total_test_count(); ++t) {
       const std::string name = suite->GetTestInfo(t)->name(), id = exerciseOf(name);
-      EXPECT_TRUE(ids.count(id)) << "WRONG: test " << suite->name() << "." << name << " names no exercise of the manifest";
+      EXPECT_TRUE(ids.count(id)) << "WRONG: test " << suite->name() << "." << name
+                                 << " names no exercise of the manifest";
       tested.insert(id);
     }
   }
@@ -124,11 +131,15 @@ int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   bool check = false, expectStubs = false;
   for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--check")) check = true;
-    else if (!std::strcmp(argv[i], "--expect-stubs")) check = expectStubs = true;
-    else if (!std::strcmp(argv[i], "--update-golden")) wb::test::g_updateGolden = true;
+    if (!std::strcmp(argv[i], "--check"))
+      check = true;
+    else if (!std::strcmp(argv[i], "--expect-stubs"))
+      check = expectStubs = true;
+    else if (!std::strcmp(argv[i], "--update-golden"))
+      wb::test::g_updateGolden = true;
     else {
-      std::fprintf(stderr, "%s: unknown option '%s' (accepted: --check, --expect-stubs, --update-golden, --gtest_*)\n", argv[0], argv[i]);
+      std::fprintf(stderr, "%s: unknown option '%s' (accepted: --check, --expect-stubs, --update-golden, --gtest_*)\n",
+                   argv[0], argv[i]);
       return 2;
     }
   }
