@@ -13,14 +13,6 @@ namespace fs = std::filesystem;
 namespace wb {
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) throw Error("cannot read " + p.string());
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // [begin, end) of the chunk of `id`: from the line with its marker to the next marker or the end.
 std::pair<size_t, size_t> chunk(const std::string& text, const std::string& id) {
   const std::string marker = "// EXERCISE " + id;
@@ -44,14 +36,14 @@ std::string takeExerciseChunk(const std::string& base, const std::string& donor,
 }
 
 std::string isolatedExerciseSource(const std::string& file, const std::string& id) {
-  const std::string mine = slurp(findShaderFile(file, shaderSearchPath()));
+  const std::string mine = readFile(findShaderFile(file, shaderSearchPath()));
   const fs::path solution = fs::path(variant::kSolutionDir) / "shaders" / file;
   if (*variant::kSolutionDir == '\0' || !fs::exists(solution)) return mine;
   // Start from the solution and put in only this exercise's chunk: a syntax error elsewhere in the
   // student's file then costs only the exercise it is in. For a C++ exercise (no chunk here) the
   // GLSL is all solution, so a GLSL stub never blocks it.
-  if (mine.find("// EXERCISE " + id) == std::string::npos) return slurp(solution);
-  return takeExerciseChunk(slurp(solution), mine, id);
+  if (mine.find("// EXERCISE " + id) == std::string::npos) return readFile(solution);
+  return takeExerciseChunk(readFile(solution), mine, id);
 }
 
 std::vector<glm::vec4> runGlslKernel(const std::string& functions, const fs::path& origin, const std::string& body,
@@ -74,26 +66,12 @@ std::vector<glm::vec4> runGlslKernel(const std::string& functions, const fs::pat
       << "  vec4 result = vec4(0.0);\n  " << body << "\n  wb_out[wb_i] = result;\n}\n";
   pre.files.emplace_back("<harness main>");
   pre.text = src.str();
-  GLuint sh = glCreateShader(GL_COMPUTE_SHADER);
-  const char* text = pre.text.c_str();
-  glShaderSource(sh, 1, &text, nullptr);
-  glCompileShader(sh);
-  GLint ok = 0;
-  glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    GLint len = 0;
-    glGetShaderiv(sh, GL_INFO_LOG_LENGTH, &len);
-    std::string log(std::max(len, 1), '\0');
-    glGetShaderInfoLog(sh, len, nullptr, log.data());
-    glDeleteShader(sh);
-    throw Error("compile error:\n" + mapShaderLog(log.c_str(), pre.files));
+  ProgramId prog;
+  try {
+    prog = linkProgram({{GL_COMPUTE_SHADER, pre}});
+  } catch (const Error& e) {
+    throw Error(std::string("compile error:\n") + e.what());
   }
-  ProgramId prog(glCreateProgram());
-  glAttachShader(prog.id(), sh);
-  glLinkProgram(prog.id());
-  glDeleteShader(sh);
-  glGetProgramiv(prog.id(), GL_LINK_STATUS, &ok);
-  if (!ok) throw Error("link error in the GLSL harness for " + origin.string());
 
   std::vector<glm::vec4> padded = inputs;
   padded.resize(std::max<size_t>(inputs.size(), 1));

@@ -51,13 +51,6 @@ struct PassStats {
   int count = 0;
 };
 
-std::string readText(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 }  // namespace
 
 struct Lab::Impl {
@@ -125,7 +118,7 @@ Lab::Lab(std::string defaultScene) : impl_(std::make_unique<Impl>()), defaultSce
   // The manifest is the one list of this lab's exercises (also used by the tests and grading).
   const fs::path manifest = fs::path(variant::kLabDir) / "exercises.json";
   try {
-    auto j = nlohmann::json::parse(readText(manifest));
+    auto j = nlohmann::json::parse(readFile(manifest));
     number_ = j.at("lab").get<std::string>().substr(0, 2);
     title_ = j.at("title").get<std::string>();
     for (const auto& e : j.at("exercises"))
@@ -239,7 +232,7 @@ void Lab::probeGlslExercises() {
     try {
       const fs::path path = findShaderFile(file, shaderSearchPath());
       i.probedFiles[path] = fs::last_write_time(path);
-      auto r = runGlslKernel(readText(path), path, body, int(probes.size()), 1, {}, {dummy.id()});
+      auto r = runGlslKernel(readFile(path), path, body, int(probes.size()), 1, {}, {dummy.id()});
       for (size_t k = 0; k < probes.size(); ++k)
         setStatus(probes[k]->id, isTodo(r[k].x) ? ExerciseState::NotImplemented : ExerciseState::Implemented,
                   isTodo(r[k].x) ? "the GLSL function still returns WB_TODO" : "");

@@ -15,14 +15,6 @@ namespace fs = std::filesystem;
 namespace wb {
 namespace {
 
-std::string readFile(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) throw Error("cannot read shader file " + p.string());
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 std::vector<fs::path> splitPath(const std::string& s) {
   std::vector<fs::path> out;
   std::stringstream ss(s);
@@ -64,6 +56,14 @@ void expand(const std::string& text, const fs::path& origin, const std::string& 
 }
 
 }  // namespace
+
+std::string readFile(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw Error("cannot read " + p.string());
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
 
 std::vector<fs::path> shaderSearchPath() {
   std::vector<fs::path> path;
@@ -122,23 +122,12 @@ Program Program::fromSource(GLenum type, const std::string& text, const std::str
   return p;
 }
 
-ProgramId Program::build() {
-  const auto path = shaderSearchPath();
-  inputs_.clear();
+ProgramId linkProgram(const std::vector<std::pair<GLenum, ShaderSource>>& stages) {
   ProgramId program(glCreateProgram());
   std::vector<GLuint> shaders;
   std::string errors;
-  for (const auto& stage : stages_) {
-    ShaderSource src;
-    if (!inlineText_.empty()) {
-      src = preprocessShader(inlineText_, stage.file, defines_, path);
-    } else {
-      const fs::path file = findShaderFile(stage.file, path);
-      src = preprocessShader(readFile(file), file, defines_, path);
-    }
-    for (const auto& f : src.files)
-      if (fs::exists(f)) inputs_.emplace_back(f, fs::last_write_time(f));
-    GLuint sh = glCreateShader(stage.type);
+  for (const auto& [type, src] : stages) {
+    GLuint sh = glCreateShader(type);
     const char* text = src.text.c_str();
     glShaderSource(sh, 1, &text, nullptr);
     glCompileShader(sh);
@@ -167,12 +156,31 @@ ProgramId Program::build() {
     }
   }
   for (GLuint sh : shaders) glDeleteShader(sh);
-  if (!errors.empty()) {
-    std::string names;
-    for (const auto& s : stages_) names += (names.empty() ? "" : " + ") + s.file;
-    throw Error("shader " + names + " failed to build:\n" + errors);
-  }
+  if (!errors.empty()) throw Error(errors);
   return program;
+}
+
+ProgramId Program::build() {
+  const auto path = shaderSearchPath();
+  inputs_.clear();
+  std::vector<std::pair<GLenum, ShaderSource>> sources;
+  std::string names;
+  for (const auto& stage : stages_) {
+    if (!inlineText_.empty()) {
+      sources.emplace_back(stage.type, preprocessShader(inlineText_, stage.file, defines_, path));
+    } else {
+      const fs::path file = findShaderFile(stage.file, path);
+      sources.emplace_back(stage.type, preprocessShader(readFile(file), file, defines_, path));
+    }
+    for (const auto& f : sources.back().second.files)
+      if (fs::exists(f)) inputs_.emplace_back(f, fs::last_write_time(f));
+    names += (names.empty() ? "" : " + ") + stage.file;
+  }
+  try {
+    return linkProgram(sources);
+  } catch (const Error& e) {
+    throw Error("shader " + names + " failed to build:\n" + e.what());
+  }
 }
 
 Program Program::tryLoad(std::vector<ShaderStage> stages, std::string defines) {

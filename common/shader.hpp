@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace wb {
@@ -17,6 +18,9 @@ struct ShaderStage {
   GLenum type;       ///< GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER, ...
   std::string file;  ///< e.g. "depth.frag"; resolved on shaderSearchPath()
 };
+
+/// Reads a whole file; throws wb::Error naming it if it cannot be read.
+std::string readFile(const std::filesystem::path& file);
 
 /// This build's shader search path: $WB_SHADER_OVERLAY (if set), then the variant's folders.
 std::vector<std::filesystem::path> shaderSearchPath();
@@ -37,6 +41,9 @@ ShaderSource preprocessShader(const std::string& text, const std::filesystem::pa
 
 /// Rewrites compiler positions such as "2:14(3): error" into "shaders/exercise.glsl:14: error".
 std::string mapShaderLog(const std::string& log, const std::vector<std::filesystem::path>& files);
+
+/// Compiles and links preprocessed stages; throws wb::Error with every message mapped to file:line.
+ProgramId linkProgram(const std::vector<std::pair<GLenum, ShaderSource>>& stages);
 
 /// A linked program built from files. Construction throws wb::Error (with file:line) on failure;
 /// reloadIfChanged() never throws and keeps the last good program.

@@ -26,13 +26,6 @@ std::string quote(const std::string& s) {
   return q + "'";
 }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // Reference | result | diff, side by side in one picture is handy, but three files are what the
 // report links; the diff is red where the result has extra shadow, blue where it lost shadow,
 // magenta where the exercise is still a stub.
@@ -92,7 +85,7 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
   std::string exe = variant::kLabExe;
   const bool haveSolution = *variant::kSolutionDir != '\0' && !updatingGolden();
   if (haveSolution) {
-    const std::string mine = slurp(findShaderFile("exercise.glsl", shaderSearchPath()));
+    const std::string mine = readFile(findShaderFile("exercise.glsl", shaderSearchPath()));
     if (mine.find("// EXERCISE " + id) != std::string::npos)
       exe = variant::kSolutionExe[0] ? variant::kSolutionExe : exe;
     std::ofstream(out / "exercise.glsl") << isolatedExerciseSource("exercise.glsl", id);
@@ -108,19 +101,19 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
   if (code != 0 || !fs::exists(pfm)) {
     // The first line names the cause (a compile error's file:line when there is one).
     std::string cause, last;
-    std::istringstream lines(slurp(log));
+    std::istringstream lines(readFile(log));
     for (std::string l; std::getline(lines, l);) {
       if (!l.empty()) last = l;
       if (cause.empty() && l.find(": error") != std::string::npos) cause = l;
     }
     FAIL() << "ERROR: the lab " << (code == 124 ? "timed out" : "failed (exit " + std::to_string(code) + ")") << ": "
            << (cause.empty() ? last : cause) << "\n"
-           << slurp(log) << "command: " << cmd;
+           << readFile(log) << "command: " << cmd;
   }
   // The app probes every exercise; a stub whose effect cannot be seen in pixels (an alpha test
   // that keeps everything) is still reported as not implemented.
   {
-    std::istringstream lines(slurp(log));
+    std::istringstream lines(readFile(log));
     for (std::string l; std::getline(lines, l);)
       if (l.rfind("Exercise " + id + " (", 0) == 0 && l.find("not implemented yet") != std::string::npos)
         FAIL() << "NOT IMPLEMENTED: " << l;
@@ -166,7 +159,7 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
   std::ostringstream msg;
   if (todo) {
     msg << "NOT IMPLEMENTED: " << todo << " pixels of scene '" << name << "' show the not-implemented placeholder";
-    std::istringstream lines(slurp(log));
+    std::istringstream lines(readFile(log));
     for (std::string l; std::getline(lines, l);)
       if (l.find("not implemented") != std::string::npos) msg << "\n  " << l;
   } else {
