@@ -515,9 +515,14 @@ void Lab::drawShell() {
     }
     ImGui::TextColored(c, "%s  %-16s %s", e.id.c_str(), label, e.title.c_str());
     if (!e.message.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.message.c_str());
-    if (e.state == ExerciseState::Failed) {
+    if (e.state == ExerciseState::Failed) {  // the line that names file:line, if there is one
+      std::string first = e.message.substr(0, e.message.find('\n'));
+      if (auto at = e.message.find(": error"); at != std::string::npos) {
+        const size_t begin = e.message.rfind('\n', at) + 1;
+        first = e.message.substr(begin, e.message.find('\n', at) - begin);
+      }
       ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40);
-      ImGui::TextColored(red, "    %s", e.message.c_str());
+      ImGui::TextColored(red, "      %s", first.c_str());
       ImGui::PopTextWrapPos();
     }
   }
