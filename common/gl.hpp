@@ -19,7 +19,9 @@ class GlObject {
   explicit GlObject(GLuint id) : id_(id) {}
   GlObject(const GlObject&) = delete;
   GlObject& operator=(const GlObject&) = delete;
+  /// Takes ownership from `o`, leaving it empty.
   GlObject(GlObject&& o) noexcept : id_(std::exchange(o.id_, 0)) {}
+  /// Frees the current object, then takes ownership from `o`.
   GlObject& operator=(GlObject&& o) noexcept {
     if (this != &o) {
       reset();
@@ -40,13 +42,14 @@ class GlObject {
   GLuint id_ = 0;
 };
 
+/// Deleters for GlObject, one per kind of GL object.
 namespace gldelete {
-inline void buffer(GLuint id) { glDeleteBuffers(1, &id); }
-inline void texture(GLuint id) { glDeleteTextures(1, &id); }
-inline void framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
-inline void vertexArray(GLuint id) { glDeleteVertexArrays(1, &id); }
-inline void program(GLuint id) { glDeleteProgram(id); }
-inline void query(GLuint id) { glDeleteQueries(1, &id); }
+inline void buffer(GLuint id) { glDeleteBuffers(1, &id); }            ///< deletes one buffer
+inline void texture(GLuint id) { glDeleteTextures(1, &id); }          ///< deletes one texture
+inline void framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }  ///< deletes one framebuffer
+inline void vertexArray(GLuint id) { glDeleteVertexArrays(1, &id); }  ///< deletes one vertexArray
+inline void program(GLuint id) { glDeleteProgram(id); }               ///< deletes one program
+inline void query(GLuint id) { glDeleteQueries(1, &id); }             ///< deletes one query
 }  // namespace gldelete
 
 using Buffer = GlObject<gldelete::buffer>;            ///< owns a buffer object

@@ -9,7 +9,8 @@ namespace wb {
 
 /// A single-channel float image, rows bottom to top (the order of glReadPixels and of PFM).
 struct FloatImage {
-  int width = 0, height = 0;  ///< size in pixels
+  int width = 0;              ///< size in pixels
+  int height = 0;             ///< size in pixels
   std::vector<float> pixels;  ///< width × height values
   /// The value at (x, y), y counted from the bottom row.
   float at(int x, int y) const { return pixels[size_t(y) * width + x]; }

@@ -104,7 +104,9 @@ class Lab {
   /// Times the GPU work of one pass until the returned object is destroyed (GL_TIME_ELAPSED).
   class PassTimer {
    public:
+    /// Begins a GL_TIME_ELAPSED query for the pass `name`.
     PassTimer(Lab& lab, const char* name);
+    /// Ends the query; the result is collected when the GPU has it.
     ~PassTimer();
     PassTimer(const PassTimer&) = delete;
     PassTimer& operator=(const PassTimer&) = delete;

@@ -45,11 +45,12 @@ struct Light {
 
 /// A loaded scene file.
 struct Scene {
-  std::filesystem::path path;            ///< the file it came from
-  std::vector<SceneObject> objects;      ///< everything drawn
-  std::vector<Light> lights;             ///< at least one
-  std::vector<CameraBookmark> cameras;   ///< at least one
-  glm::vec3 boundsMin{0}, boundsMax{0};  ///< world-space bounds of all objects
+  std::filesystem::path path;           ///< the file it came from
+  std::vector<SceneObject> objects;     ///< everything drawn
+  std::vector<Light> lights;            ///< at least one
+  std::vector<CameraBookmark> cameras;  ///< at least one
+  glm::vec3 boundsMin{0};               ///< world-space minimum corner of all objects
+  glm::vec3 boundsMax{0};               ///< world-space maximum corner of all objects
 
   /// Loads and validates a scene; throws wb::UsageError naming the file, the field and the reason.
   static Scene load(const std::filesystem::path& file);

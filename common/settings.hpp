@@ -10,12 +10,14 @@ namespace wb {
 
 /// One tunable: a name such as "shadow.map_size", a pointer to the lab's member, and its limits.
 struct Setting {
+  /// The value type behind `value`.
   enum class Kind { Float, Int, Bool, Choice };
   std::string name;                  ///< dotted name used by --set and the UI
   std::string help;                  ///< one line, shown by --list-settings and as a tooltip
   Kind kind;                         ///< value type
   void* value;                       ///< points at the lab's member
-  float min = 0, max = 1;            ///< range for Float and Int
+  float min = 0;                     ///< lower bound for Float and Int
+  float max = 1;                     ///< upper bound for Float and Int
   std::vector<std::string> choices;  ///< names for Choice (the int is the index)
 };
 
