@@ -2,6 +2,7 @@
 
 #include "common/context.hpp"
 #include "common/glsl_harness.hpp"
+#include "common/ground_truth.hpp"
 #include "common/image.hpp"
 #include "common/variant.hpp"
 
@@ -35,13 +36,16 @@ const char* const kUsage =
     "  --frames N            frames to render before writing outputs and exiting\n"
     "  --screenshot F.png    write the final frame as PNG\n"
     "  --dump-visibility F   write per-pixel light visibility (1 lit, 0 shadowed) as a float PFM\n"
-    "  --bench F.csv         time every pass (GPU ms) and the frame (wall ms) over the frames\n";
+    "  --bench F.csv         time every pass (GPU ms) and the frame (wall ms) over the frames\n"
+    "  --metrics             compare with exact (ray-cast) visibility: acne rate and light leak\n"
+    "  --heatmap F.png       with --metrics: write acne (red) and leaks (blue) as a picture\n";
 
 const int kMapSizes[] = {512, 1024, 2048, 4096, 8192};
 
 struct Options {
   bool headless = false, listSettings = false;
-  std::string scene, screenshot, visibility, bench;
+  std::string scene, screenshot, visibility, bench, heatmap;
+  bool metrics = false;
   glm::ivec2 size{960, 540};
   int frames = -1;  // -1: until the window closes (headless: 1, bench: 60)
 };
@@ -57,8 +61,8 @@ struct Lab::Impl {
   Options opt;
   std::unique_ptr<Context> ctx;
   Framebuffer fbo;
-  Texture color, visibility, depth;
-  std::unique_ptr<Program> lines, inset;
+  Texture color, visibility, position, depth;
+  std::unique_ptr<Program> lines, inset, overlay;
   VertexArray emptyVao;
   // GPU timers: queries in flight, a pool of free ones, and per-pass statistics.
   std::vector<std::pair<std::string, GLuint>> pending;
@@ -73,6 +77,13 @@ struct Lab::Impl {
   std::map<fs::path, fs::file_time_type> probedFiles;
   bool strictGl = false, imgui = false, screenshotRequested = false;
   std::string lastScreenshot;
+  // Exact-visibility measurement: the ray-cast scene (rebuilt when the alpha cutoff changes), the
+  // last result as text, and its heatmap shown over the frame in a window.
+  std::unique_ptr<RayScene> rays;
+  float raysCutoff = -1;
+  std::string measured;
+  Texture heatmap;
+  bool showHeatmap = false;
   int frameIndex = 0, warmup = 0;
   double wallSum = 0;
   int wallCount = 0;
@@ -132,6 +143,7 @@ Lab::Lab(std::string defaultScene) : impl_(std::make_unique<Impl>()), defaultSce
   settings.addChoice("shadow.map_size", mapSizeChoice_, sizes,
                      "shadow map resolution in texels (clamped to GL_MAX_TEXTURE_SIZE)");
   settings.add("shadow.bias", bias_, 0.0f, 0.05f, "constant depth bias subtracted from the receiver depth");
+  settings.add("alpha.cutoff", alphaCutoff_, 0.0f, 1.0f, "leaf texels with lower alpha are holes and cast no shadow");
   settings.add("light.index", lightIndex, 0, 7, "which light of the scene casts shadows");
   settings.addChoice("debug.view", debugView_, {"camera", "light"}, "see the scene from the camera or from the light");
   settings.add("debug.shadow_map", showMap_, "show the shadow map (linearised for perspective lights) in a corner");
@@ -271,6 +283,10 @@ int Lab::main(int argc, char** argv) {
         i.opt.visibility = value();
       else if (arg == "--bench")
         i.opt.bench = value();
+      else if (arg == "--metrics")
+        i.opt.metrics = true;
+      else if (arg == "--heatmap")
+        i.opt.heatmap = value(), i.opt.metrics = true;
       else if (arg == "--size") {
         std::string v = value();
         char x = 0, extra = 0;
@@ -290,7 +306,7 @@ int Lab::main(int argc, char** argv) {
       } else
         throw UsageError("unknown option '" + arg +
                          "'; accepted: --headless --scene --size --set --frames "
-                         "--screenshot --dump-visibility --bench --list-settings --help");
+                         "--screenshot --dump-visibility --bench --metrics --heatmap --list-settings --help");
     }
     for (const auto& s : sets) settings.assign(s);
     if (i.opt.listSettings) {
@@ -305,7 +321,8 @@ int Lab::main(int argc, char** argv) {
       throw UsageError("light.index=" + std::to_string(lightIndex) + " but " + scenePath.string() + " has " +
                        std::to_string(scene.lights.size()) + " light(s)");
     camera.pose = scene.cameras[std::min<size_t>(bookmark_, scene.cameras.size() - 1)];
-    const bool writeSomething = !i.opt.screenshot.empty() || !i.opt.visibility.empty() || !i.opt.bench.empty();
+    const bool writeSomething =
+        !i.opt.screenshot.empty() || !i.opt.visibility.empty() || !i.opt.bench.empty() || i.opt.metrics;
     if (i.opt.headless && !writeSomething) i.opt.screenshot = "lab" + number_ + ".png";
     if (i.opt.frames < 0 && (i.opt.headless || !i.opt.bench.empty())) i.opt.frames = i.opt.bench.empty() ? 1 : 60;
     i.warmup = i.opt.bench.empty() ? 0 : std::min(10, i.opt.frames / 4);
@@ -326,6 +343,8 @@ int Lab::main(int argc, char** argv) {
         std::vector<ShaderStage>{{GL_VERTEX_SHADER, "wb/frustum.vert"}, {GL_FRAGMENT_SHADER, "wb/flat.frag"}});
     i.inset = std::make_unique<Program>(
         std::vector<ShaderStage>{{GL_VERTEX_SHADER, "wb/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "wb/depth_view.frag"}});
+    i.overlay = std::make_unique<Program>(std::vector<ShaderStage>{{GL_VERTEX_SHADER, "wb/fullscreen.vert"},
+                                                                   {GL_FRAGMENT_SHADER, "wb/overlay.frag"}});
     gpuScene = std::make_unique<GpuScene>(scene);
     if (!i.ctx->headless()) {
       IMGUI_CHECKVERSION();
@@ -355,8 +374,10 @@ int Lab::main(int argc, char** argv) {
         if (i.strictGl) throw Error("OpenGL error: " + e);
         warn("OpenGL error: " + e);
       }
+      if (i.opt.metrics && i.imgui && i.frameIndex == 0) measure();  // a window shows it as an overlay
       ++i.frameIndex;
     }
+    if (i.opt.metrics && !i.imgui) measure();
     writeOutputs();
     for (const auto& e : exercises_)
       if (e.state == ExerciseState::NotImplemented || e.state == ExerciseState::Failed)
@@ -386,8 +407,10 @@ void Lab::frame(float dt) {
     glm::dvec2 mouse;
     glfwGetCursorPos(win, &mouse.x, &mouse.y);
     if (!io.WantCaptureMouse) {  // never steal the mouse from a widget
-      if (glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS)
+      if (glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS && mouse != i.lastMouse) {
         camera.orbit(float(mouse.x - i.lastMouse.x), float(mouse.y - i.lastMouse.y));
+        i.showHeatmap = false;  // it was measured for the old view
+      }
       camera.zoom(io.MouseWheel);
     }
     i.lastMouse = mouse;
@@ -418,13 +441,15 @@ void Lab::frame(float dt) {
     i.opt.size = frameSize_;
     i.color = makeTexture2D(GL_RGBA8, frameSize_.x, frameSize_.y);
     i.visibility = makeTexture2D(GL_R32F, frameSize_.x, frameSize_.y);
+    i.position = makeTexture2D(GL_RGBA32F, frameSize_.x, frameSize_.y);
     i.depth = makeTexture2D(GL_DEPTH_COMPONENT24, frameSize_.x, frameSize_.y);
-    i.fbo = makeFramebuffer({i.color.id(), i.visibility.id()}, i.depth.id());
+    i.fbo = makeFramebuffer({i.color.id(), i.visibility.id(), i.position.id()}, i.depth.id());
   }
   bindFrameTarget();
-  const float sky[4] = {0.55f, 0.65f, 0.78f, 1}, lit = 1;
+  const float sky[4] = {0.55f, 0.65f, 0.78f, 1}, lit = 1, none[4] = {0, 0, 0, 0};
   glClearBufferfv(GL_COLOR, 0, sky);
   glClearBufferfv(GL_COLOR, 1, &lit);
+  glClearBufferfv(GL_COLOR, 2, none);
   glClear(GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
 
@@ -438,7 +463,7 @@ void Lab::frame(float dt) {
 
   // Shared debug views, drawn into the frame target so screenshots and headless runs show them.
   bindFrameTarget();
-  glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // overlays never touch visibility
+  for (GLuint b : {1u, 2u}) glColorMaski(b, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // overlays: colour only
   glBindVertexArray(i.emptyVao.id());
   if (showFrustum_ && light_.depthMap) {
     i.lines->use();
@@ -459,10 +484,22 @@ void Lab::frame(float dt) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glEnable(GL_DEPTH_TEST);
   }
-  glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  if (i.showHeatmap && i.heatmap.id()) {  // red: acne, blue: light leaking (see ground_truth.hpp)
+    glViewport(0, 0, frameSize_.x, frameSize_.y);
+    glDisable(GL_DEPTH_TEST);
+    glEnablei(GL_BLEND, 0);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    i.overlay->use();
+    glBindTextureUnit(0, i.heatmap.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDisablei(GL_BLEND, 0);
+    glEnable(GL_DEPTH_TEST);
+  }
+  for (GLuint b : {1u, 2u}) glColorMaski(b, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 
   if (i.imgui) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, i.fbo.id());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);  // (measure() and writeOutputs() point it elsewhere)
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glBlitFramebuffer(0, 0, frameSize_.x, frameSize_.y, 0, 0, frameSize_.x, frameSize_.y, GL_COLOR_BUFFER_BIT,
                       GL_NEAREST);
@@ -531,6 +568,13 @@ void Lab::drawShell() {
     ImGui::Text("GPU time per pass");
     for (const auto& [name, s] : i.passes) ImGui::Text("  %-12s %7.3f ms", name.c_str(), s.last);
   }
+  ImGui::Separator();
+  if (ImGui::Button("Measure against exact visibility")) measure();
+  if (!i.measured.empty()) {
+    ImGui::SameLine();
+    ImGui::Checkbox("heatmap", &i.showHeatmap);
+    ImGui::TextUnformatted(i.measured.c_str());
+  }
   for (const auto& p : programs_)
     if (!p.error().empty()) {
       ImGui::Separator();
@@ -555,6 +599,40 @@ void Lab::drawShell() {
   ui();
   ImGui::PopItemWidth();
   ImGui::End();
+}
+
+void Lab::measure() {
+  auto& i = *impl_;
+  const int w = frameSize_.x, h = frameSize_.y;
+  const auto t0 = std::chrono::steady_clock::now();
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, i.fbo.id());
+  FloatImage rendered{w, h, std::vector<float>(size_t(w) * size_t(h))};
+  glReadBuffer(GL_COLOR_ATTACHMENT1);
+  glReadPixels(0, 0, w, h, GL_RED, GL_FLOAT, rendered.pixels.data());
+  std::vector<glm::vec4> positions(size_t(w) * size_t(h));
+  glReadBuffer(GL_COLOR_ATTACHMENT2);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, positions.data());
+  if (!i.rays || i.raysCutoff != alphaCutoff_) i.rays = std::make_unique<RayScene>(scene, alphaCutoff_), i.raysCutoff = alphaCutoff_;
+  const FloatImage exact = exactVisibility(*i.rays, scene.lights[size_t(lightIndex)], w, h, positions);
+  const VisibilityMetrics m = compareVisibility(rendered, exact, positions);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "acne rate %.2f%% (%ld of %ld lit pixels drawn shadowed)\nlight leak %.2f%% (%ld of %ld shadowed pixels "
+                "drawn lit)\n(exact visibility by ray casting, %.0f ms)",
+                100 * m.acneRate(), m.acnePixels, m.litPixels, 100 * m.leakRate(), m.leakPixels, m.shadowedPixels, ms);
+  i.measured = text;
+  const std::vector<uint8_t> heat = artifactHeatmap(rendered, exact, positions);
+  if (i.imgui) {
+    i.heatmap = makeTexture2D(GL_RGBA8, w, h);
+    glTextureSubImage2D(i.heatmap.id(), 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, heat.data());
+    i.showHeatmap = true;
+  }
+  std::printf("%s\n", text);
+  if (!i.opt.heatmap.empty()) {
+    writePng(i.opt.heatmap, w, h, heat);
+    std::printf("wrote %s\n", fs::absolute(i.opt.heatmap).string().c_str());
+  }
 }
 
 void Lab::writeOutputs() {

@@ -57,7 +57,8 @@ class Lab {
   virtual void init() = 0;
   /// Advances animation by `dt` seconds (fixed 1/60 s in headless runs, so captures repeat).
   virtual void update(float /*dt*/) {}
-  /// Draws one frame into the frame target (color attachment 0, visibility attachment 1).
+  /// Draws one frame into the frame target: color (attachment 0), visibility (1) and world
+  /// position (2); shaders/wb/outputs.glsl declares them.
   virtual void render() = 0;
   /// Adds the lab's own widgets to its Settings window.
   virtual void ui() {}
@@ -98,6 +99,9 @@ class Lab {
   int shadowMapSize();
   /// The constant depth bias of the shared debug controls.
   float depthBias() const { return bias_; }
+  /// Texels of alpha-tested materials below this alpha are holes (setting alpha.cutoff); the exact
+  /// visibility uses the same value.
+  float alphaCutoff() const { return alphaCutoff_; }
   /// A warning shown in the info panel (and printed once on stderr).
   void warn(const std::string& message);
 
@@ -130,12 +134,14 @@ class Lab {
   void drawShell();
   void probeGlslExercises();
   void writeOutputs();
+  void measure();
 
   std::string number_, title_, defaultScene_;
   glm::ivec2 frameSize_{960, 540};
   LightView light_;
   int mapSizeChoice_ = 1;  // index into 512..8192
   float bias_ = 0.004f;
+  float alphaCutoff_ = 0.5f;
   int debugView_ = 0;  // 0 = camera, 1 = light
   bool showMap_ = false, showFrustum_ = false;
   int bookmark_ = 0;

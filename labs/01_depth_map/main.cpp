@@ -16,9 +16,7 @@ namespace {
 
 class DepthMapLab : public wb::Lab {
  public:
-  DepthMapLab() : Lab("scenes/depth_map.json") {
-    settings.add("alpha.cutoff", alphaCutoff, 0.0f, 1.0f, "leaf texels with lower alpha cast no shadow");
-  }
+  DepthMapLab() : Lab("scenes/depth_map.json") {}
 
  protected:
   void init() override {
@@ -60,7 +58,7 @@ class DepthMapLab : public wb::Lab {
       glClear(GL_DEPTH_BUFFER_BIT);
       glDisable(GL_CULL_FACE);  // the leaves are open quads; every face may cast a shadow
       depthProgram->set("u_lightViewProj", lightViewProj);
-      depthProgram->set("u_alphaCutoff", alphaCutoff);
+      depthProgram->set("u_alphaCutoff", alphaCutoff());
       gpuScene->draw(*depthProgram);
       showLight({lightViewProj, spot, light.nearPlane, light.farPlane, shadowMap.id()});
     }
@@ -73,7 +71,7 @@ class DepthMapLab : public wb::Lab {
     p.set("u_lightViewProj", lightViewProj);
     p.set("u_shadowsReady", ready ? 1 : 0);
     p.set("u_bias", depthBias());
-    p.set("u_alphaCutoff", alphaCutoff);
+    p.set("u_alphaCutoff", alphaCutoff());
     p.set("u_lightType", spot ? 1 : 0);
     p.set("u_lightPos", light.position);
     p.set("u_lightDir", light.direction);
@@ -100,7 +98,6 @@ class DepthMapLab : public wb::Lab {
   wb::Framebuffer shadowFbo;
   int mapSize = 0;
   glm::mat4 lightViewProj{1};
-  float alphaCutoff = 0.5f;  // leaf texels below this alpha are holes
 };
 
 }  // namespace

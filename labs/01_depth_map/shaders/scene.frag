@@ -2,6 +2,7 @@
 // PASS 2 fragment stage: shade each visible point, asking the shadow map whether the light reaches it.
 #include "exercise.glsl"
 #include "wb/lighting.glsl"
+#include "wb/outputs.glsl"
 in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
@@ -17,8 +18,6 @@ uniform int u_lightType;     // 0 directional, 1 spot
 uniform vec3 u_lightPos;
 uniform vec3 u_lightDir;     // the direction the light travels
 uniform float u_spotCos;     // cosine of the spot cone's half-angle
-layout(location = 0) out vec4 o_color;
-layout(location = 1) out float o_visibility;  // 1 lit, 0 shadowed: --dump-visibility writes it
 
 void main() {
   vec4 texel = u_hasTexture != 0 ? texture(u_albedo, v_uv) : vec4(1.0);
@@ -32,15 +31,12 @@ void main() {
     vec3 coord = worldToShadowCoord(u_lightViewProj, v_world);
     if (!wbIsTodo(coord)) visibility = hardShadow(u_shadowMap, coord, u_bias);
   }
+  vec3 toLight = u_lightType == 0 ? -u_lightDir : normalize(u_lightPos - v_world);
+  bool facesLight = dot(n, toLight) > 0.0;
   if (wbIsTodo(visibility)) {  // an exercise is missing: show it, never fake a shadow
-    o_visibility = visibility;
-    o_color = vec4(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), 1.0);
+    wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
     return;
   }
-  vec3 toLight = u_lightType == 0 ? -u_lightDir : normalize(u_lightPos - v_world);
-  // A surface turned away from the light is unlit whatever the map says (an attached shadow); the
-  // visibility buffer records that instead of the map's noisy answer there.
-  o_visibility = dot(n, toLight) > 0.0 ? visibility : 0.0;
   float cone = u_lightType == 0 ? 1.0 : smoothstep(u_spotCos, mix(u_spotCos, 1.0, 0.1), dot(-toLight, u_lightDir));
-  o_color = vec4(wbShade(albedo, n, toLight, vec3(cone), visibility), 1.0);
+  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(cone), visibility), visibility, v_world, facesLight);
 }

@@ -1,0 +1,58 @@
+/// @file ground_truth.hpp
+/// Exact light visibility, by casting rays against the scene's triangles (the same triangles the
+/// labs rasterise, alpha-tested leaves included), and the artifact metrics every technique is
+/// measured with: acne (lit surfaces drawn shadowed) and light leaking (shadowed surfaces drawn lit).
+#pragma once
+#include "common/image.hpp"
+#include "common/scene.hpp"
+
+#include <glm/glm.hpp>
+
+#include <memory>
+#include <vector>
+
+namespace wb {
+
+/// The scene's triangles in world space, in a bounding-volume hierarchy for shadow rays.
+class RayScene {
+public:
+  /// Builds the hierarchy; textured objects are alpha-tested with `alphaCutoff` (their texture is
+  /// read with stb_image, as the renderer reads it).
+  RayScene(const Scene& scene, float alphaCutoff);
+  ~RayScene();
+  /// True if a triangle blocks the ray origin + t·dir for tMin < t < tMax.
+  bool occluded(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax) const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Exact visibility per pixel: 1 lit, 0 shadowed, NaN where nothing is measured (background,
+/// outside a spot light's cone). `positions` holds world xyz and w = +1 for a surface facing the
+/// light, −1 for one facing away (always shadowed), 0 for background, rows bottom to top.
+FloatImage exactVisibility(const RayScene& rays, const Light& light, int width, int height,
+                           const std::vector<glm::vec4>& positions);
+
+/// How a rendered visibility buffer compares with the exact one.
+struct VisibilityMetrics {
+  long litPixels = 0;       ///< light-facing pixels the light really reaches
+  long acnePixels = 0;      ///< of those, drawn shadowed (visibility < 0.5)
+  long shadowedPixels = 0;  ///< light-facing pixels in a cast shadow
+  long leakPixels = 0;      ///< of those, drawn lit (visibility >= 0.5)
+  /// Acne rate: the share of lit light-facing pixels drawn shadowed.
+  double acneRate() const { return litPixels ? double(acnePixels) / litPixels : 0; }
+  /// Light leak: the share of truly shadowed pixels drawn lit.
+  double leakRate() const { return shadowedPixels ? double(leakPixels) / shadowedPixels : 0; }
+};
+
+/// Compares `rendered` with `exact` on every pixel where `exact` is not NaN.
+VisibilityMetrics compareVisibility(const FloatImage& rendered, const FloatImage& exact,
+                                    const std::vector<glm::vec4>& positions);
+
+/// An RGBA8 picture of the comparison: the scene's light-facing pixels in grey, acne in red, light
+/// leaks in blue, the rest dark (rows bottom to top).
+std::vector<uint8_t> artifactHeatmap(const FloatImage& rendered, const FloatImage& exact,
+                                     const std::vector<glm::vec4>& positions);
+
+}  // namespace wb
