@@ -1,6 +1,7 @@
 // The framework's promises to students and lecturers: bad input gets a clear message and the right
 // exit code, never a crash; compiler errors name the original file and line; a broken shader edit
 // keeps the last good program.
+#include "common/ground_truth.hpp"
 #include "common/scene.hpp"
 #include "common/settings.hpp"
 #include "common/shader.hpp"
@@ -12,6 +13,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -44,10 +47,10 @@ struct LabResult {
 };
 
 // Runs the sample lab with `args` and no display; captures its exit code and output.
-LabResult runLab(const std::string& args) {
+LabResult runLab(const std::string& args, const std::string& exe = wb::variant::kLabExe) {
   const fs::path log = scratch("cli") / "out.log";
-  const std::string cmd = "cd " + scratch("cli").string() + " && env -u DISPLAY -u WAYLAND_DISPLAY timeout 60 " +
-                          wb::variant::kLabExe + " " + args + " >" + log.string() + " 2>&1";
+  const std::string cmd = "cd " + scratch("cli").string() + " && env -u DISPLAY -u WAYLAND_DISPLAY timeout 60 " + exe +
+                          " " + args + " >" + log.string() + " 2>&1";
   const int status = std::system(cmd.c_str());
   std::ifstream in(log);
   std::ostringstream s;
@@ -184,4 +187,62 @@ TEST(CommandLine, HeadlessRunWritesTheRequestedFiles) {
   EXPECT_EQ(vis.width, 64);
   EXPECT_EQ(vis.height, 48);
   EXPECT_NE(r.output.find("fps"), std::string::npos) << r.output;
+}
+
+// Exact visibility against geometry worked out by hand: a unit box [-0.5,0.5] x [0,1] x [-0.5,0.5]
+// on the ground, lit by a directional light travelling along (1,-1,0) (45 degrees). A ground point
+// (x, 0, z) sends its shadow ray along (-1,1,0); it meets the box iff |z| < 0.5 and -0.5 < x < 1.5
+// (the ray climbs one unit per unit of x, and the box is one unit tall). The box's top is lit.
+TEST(GroundTruth, ExactVisibilityOfABoxOnTheGround) {
+  const fs::path file = scratch("scenes") / "box.json";
+  writeFile(file, R"({"objects": [{"shape": "plane", "size": [10, 0, 10]},
+                                   {"shape": "box", "size": [1, 1, 1], "position": [0, 0.5, 0]}],
+                      "lights": [{"type": "directional", "direction": [1, -1, 0]}]})");
+  const wb::Scene scene = wb::Scene::load(file);
+  const wb::RayScene rays(scene, 0.5f);
+  struct Probe {
+    glm::vec3 p;
+    float expected;
+  } probes[] = {{{1.4f, 0, 0}, 0}, {{1.6f, 0, 0}, 1}, {{-0.6f, 0, 0}, 1}, {{0.9f, 0, 0.4f}, 0},
+                {{0.9f, 0, 0.6f}, 1}, {{0.2f, 1.0f, 0.1f}, 1}, {{3, 0, -2}, 1}};
+  std::vector<glm::vec4> positions;
+  for (const auto& pr : probes) positions.emplace_back(pr.p, 1);
+  positions.emplace_back(0, 0, 0, 0);   // background: not measured
+  positions.emplace_back(2, 0, 0, -1);  // facing away from the light: shadowed
+  const wb::FloatImage exact = wb::exactVisibility(rays, scene.lights[0], int(positions.size()), 1, positions);
+  for (size_t i = 0; i < std::size(probes); ++i)
+    EXPECT_EQ(exact.pixels[i], probes[i].expected) << "point (" << probes[i].p.x << ", " << probes[i].p.y << ", " << probes[i].p.z << ")";
+  EXPECT_TRUE(std::isnan(exact.pixels[std::size(probes)]));
+  EXPECT_EQ(exact.pixels[std::size(probes) + 1], 0);
+}
+
+// Acne counts lit pixels drawn shadowed; leaks count shadowed pixels drawn lit.
+TEST(GroundTruth, MetricsCountAcneAndLeaks) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const wb::FloatImage exact{6, 1, {1, 1, 1, 0, 0, nan}}, rendered{6, 1, {1, 0, 1, 0, 1, 0}};
+  const std::vector<glm::vec4> pos(6, glm::vec4(0, 0, 0, 1));
+  const wb::VisibilityMetrics m = wb::compareVisibility(rendered, exact, pos);
+  EXPECT_EQ(m.litPixels, 3);
+  EXPECT_EQ(m.acnePixels, 1);
+  EXPECT_EQ(m.shadowedPixels, 2);
+  EXPECT_EQ(m.leakPixels, 1);
+  EXPECT_NEAR(m.acneRate(), 1.0 / 3, 1e-12);
+  EXPECT_NEAR(m.leakRate(), 0.5, 1e-12);
+}
+
+// The measurement sees the trade-off the handouts teach: no bias, heavy acne; the default bias,
+// almost none; a large bias, more light leaking (peter-panning) than the default.
+TEST(GroundTruth, TheSolutionsAcneAndLeaksFollowTheBias) {
+  if (!*wb::variant::kSolutionExe) GTEST_SKIP() << "no solution build in this edition";
+  auto rates = [](const std::string& bias) {
+    const LabResult r = runLab("--headless --size 320x180 --metrics --set shadow.bias=" + bias, wb::variant::kSolutionExe);
+    double acne = -1, leak = -1;
+    std::sscanf(r.output.c_str(), "acne rate %lf%% %*[^\n]\nlight leak %lf%%", &acne, &leak);
+    EXPECT_EQ(r.code, 0) << r.output;
+    return std::make_pair(acne, leak);
+  };
+  const auto none = rates("0"), normal = rates("0.004"), large = rates("0.03");
+  EXPECT_GT(none.first, 20.0) << "no bias should give heavy acne";
+  EXPECT_LT(normal.first, 1.0) << "the default bias should remove nearly all acne";
+  EXPECT_GT(large.second, normal.second) << "a large bias should leak more light";
 }
