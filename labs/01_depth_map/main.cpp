@@ -6,6 +6,7 @@
 // Two passes: the light renders the scene's depth into a texture (the shadow map); the camera then
 // renders the scene and asks, per pixel, whether the light saw something nearer than this point.
 #include "common/lab.hpp"
+#include "common/shadow_map.hpp"
 #include "exercise.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -48,19 +49,17 @@ class DepthMapLab : public wb::Lab {
              : light.type == wb::LightType::Directional && attempt("01.1", [&] {
                  lightViewProj = lab01::directionalLightViewProj(light.direction, scene.boundsMin, scene.boundsMax);
                });
-    resizeShadowMap(shadowMapSize());
+    shadowMap.resize(shadowMapSize());
 
     // PASS 1: depth from the light. No colour target; only the depth buffer is kept.
     if (ready) {
       auto timer = timePass("shadow");
-      glBindFramebuffer(GL_FRAMEBUFFER, shadowFbo.id());
-      glViewport(0, 0, mapSize, mapSize);
-      glClear(GL_DEPTH_BUFFER_BIT);
+      shadowMap.begin();
       glDisable(GL_CULL_FACE);  // the leaves are open quads; every face may cast a shadow
       depthProgram->set("u_lightViewProj", lightViewProj);
       depthProgram->set("u_alphaCutoff", alphaCutoff());
       gpuScene->draw(*depthProgram);
-      showLight({lightViewProj, spot, light.nearPlane, light.farPlane, shadowMap.id()});
+      showLight({lightViewProj, spot, light.nearPlane, light.farPlane, shadowMap.texture()});
     }
 
     // PASS 2: the camera's view, with the shadow test per pixel.
@@ -77,26 +76,14 @@ class DepthMapLab : public wb::Lab {
     p.set("u_lightDir", light.direction);
     p.set("u_spotCos", std::cos(glm::radians(light.angle)));
     p.set("u_shadowMap", 0);
-    glBindTextureUnit(0, shadowMap.id());
+    glBindTextureUnit(0, shadowMap.texture());
     gpuScene->draw(p);
   }
 
  private:
-  // (Re)allocates the depth texture when the map size setting changes.
-  void resizeShadowMap(int size) {
-    if (size == mapSize && shadowMap.id()) return;
-    mapSize = size;
-    shadowMap = wb::makeTexture2D(GL_DEPTH_COMPONENT32F, size, size, GL_NEAREST, GL_CLAMP_TO_BORDER);
-    const float outside[4] = {1, 1, 1, 1};  // beyond the map's edge nothing blocks the light
-    glTextureParameterfv(shadowMap.id(), GL_TEXTURE_BORDER_COLOR, outside);
-    shadowFbo = wb::makeFramebuffer({}, shadowMap.id());
-  }
-
   wb::Program* depthProgram = nullptr;  // PASS 1
   wb::Program* sceneProgram = nullptr;  // PASS 2
-  wb::Texture shadowMap;
-  wb::Framebuffer shadowFbo;
-  int mapSize = 0;
+  wb::ShadowMap shadowMap;
   glm::mat4 lightViewProj{1};
 };
 
