@@ -16,6 +16,7 @@ struct RayScene::Impl {
     glm::vec3 a, e1, e2;   // a, b − a, c − a
     glm::vec2 uvA, uvE1, uvE2;
     int texture = -1;      // index into `textures`, −1 = opaque
+    int object = -1;       // index of the scene object it belongs to
   };
   struct Node {
     glm::vec3 lo, hi;
@@ -29,6 +30,7 @@ struct RayScene::Impl {
   std::vector<Triangle> tris;
   std::vector<Node> nodes;
   std::vector<Alpha> textures;
+  std::vector<float> objectMinY;  // lowest world y of each scene object
   float cutoff = 0.5f;
 
   // Median split on the longest axis of the centroids; leaves of up to 4 triangles.
@@ -58,25 +60,28 @@ struct RayScene::Impl {
     return index;
   }
 
-  // Möller–Trumbore; an alpha-tested triangle lets the ray through where its texture is clear.
-  bool hits(const Triangle& t, const glm::vec3& o, const glm::vec3& d, float tMin, float tMax) const {
+  float trace(const glm::vec3& o, const glm::vec3& d, float tMin, float tMax, bool anyHit, int* object) const;
+
+  // Möller–Trumbore: the distance to triangle t, or tMax if the ray misses it; an alpha-tested
+  // triangle lets the ray through where its texture is clear.
+  float hit(const Triangle& t, const glm::vec3& o, const glm::vec3& d, float tMin, float tMax) const {
     const glm::vec3 p = glm::cross(d, t.e2);
     const float det = glm::dot(t.e1, p);
-    if (std::abs(det) < 1e-12f) return false;
+    if (std::abs(det) < 1e-12f) return tMax;
     const float inv = 1.0f / det;
     const glm::vec3 s = o - t.a;
     const float u = glm::dot(s, p) * inv;
-    if (u < 0 || u > 1) return false;
+    if (u < 0 || u > 1) return tMax;
     const glm::vec3 q = glm::cross(s, t.e1);
     const float v = glm::dot(d, q) * inv;
-    if (v < 0 || u + v > 1) return false;
+    if (v < 0 || u + v > 1) return tMax;
     const float dist = glm::dot(t.e2, q) * inv;
-    if (dist <= tMin || dist >= tMax) return false;
-    if (t.texture < 0) return true;
+    if (dist <= tMin || dist >= tMax) return tMax;
+    if (t.texture < 0) return dist;
     const Alpha& tex = textures[size_t(t.texture)];
     glm::vec2 uv = glm::fract(t.uvA + u * t.uvE1 + v * t.uvE2);
     const int x = std::min(int(uv.x * float(tex.w)), tex.w - 1), y = std::min(int(uv.y * float(tex.h)), tex.h - 1);
-    return float(tex.a[size_t(y) * size_t(tex.w) + size_t(x)]) / 255.0f >= cutoff;
+    return float(tex.a[size_t(y) * size_t(tex.w) + size_t(x)]) / 255.0f >= cutoff ? dist : tMax;
   }
 
   static bool boxHit(const Node& n, const glm::vec3& o, const glm::vec3& invD, float tMax) {
@@ -110,11 +115,13 @@ RayScene::RayScene(const Scene& scene, float alphaCutoff) : impl_(std::make_uniq
       tex = it->second;
     }
     const auto& v = o.mesh.vertices;
+    m.objectMinY.push_back(1e30f);
+    for (const Vertex& vert : v) m.objectMinY.back() = std::min(m.objectMinY.back(), (o.model * glm::vec4(vert.position, 1)).y);
     for (size_t i = 0; i + 2 < o.mesh.indices.size(); i += 3) {
       const Vertex &a = v[o.mesh.indices[i]], &b = v[o.mesh.indices[i + 1]], &c = v[o.mesh.indices[i + 2]];
       const glm::vec3 pa(o.model * glm::vec4(a.position, 1)), pb(o.model * glm::vec4(b.position, 1)),
           pc(o.model * glm::vec4(c.position, 1));
-      m.tris.push_back({pa, pb - pa, pc - pa, a.uv, b.uv - a.uv, c.uv - a.uv, tex});
+      m.tris.push_back({pa, pb - pa, pc - pa, a.uv, b.uv - a.uv, c.uv - a.uv, tex, int(&o - scene.objects.data())});
     }
   }
   if (!m.tris.empty()) m.build(0, int(m.tris.size()));
@@ -122,25 +129,45 @@ RayScene::RayScene(const Scene& scene, float alphaCutoff) : impl_(std::make_uniq
 
 RayScene::~RayScene() = default;
 
-bool RayScene::occluded(const glm::vec3& o, const glm::vec3& d, float tMin, float tMax) const {
-  const Impl& m = *impl_;
-  if (m.nodes.empty()) return false;
+// Walks the hierarchy; with `anyHit` it stops at the first blocker, otherwise it keeps shrinking
+// tMax to the nearest hit.
+float RayScene::Impl::trace(const glm::vec3& o, const glm::vec3& d, float tMin, float tMax, bool anyHit,
+                            int* object) const {
+  if (object) *object = -1;
+  if (nodes.empty()) return tMax;
   const glm::vec3 invD = 1.0f / d;  // ±inf for axis-parallel rays is what the slab test wants
   int stack[64], top = 0;
   stack[top++] = 0;
   while (top) {
-    const int ni = stack[--top];
-    const Impl::Node& n = m.nodes[size_t(ni)];
-    if (!Impl::boxHit(n, o, invD, tMax)) continue;
+    const Node& n = nodes[size_t(stack[--top])];
+    if (!boxHit(n, o, invD, tMax)) continue;
     if (n.count) {
-      for (int i = n.first; i < n.first + n.count; ++i)
-        if (m.hits(m.tris[size_t(i)], o, d, tMin, tMax)) return true;
+      for (int i = n.first; i < n.first + n.count; ++i) {
+        const float t = hit(tris[size_t(i)], o, d, tMin, tMax);
+        if (t < tMax) {
+          if (object) *object = tris[size_t(i)].object;
+          if (anyHit) return t;
+          tMax = t;
+        }
+      }
     } else {
       stack[top++] = n.left;
       stack[top++] = n.right;
     }
   }
-  return false;
+  return tMax;
+}
+
+bool RayScene::restsOn(int object, float y) const {
+  return object >= 0 && size_t(object) < impl_->objectMinY.size() && std::abs(impl_->objectMinY[size_t(object)] - y) < 1e-3f;
+}
+
+bool RayScene::occluded(const glm::vec3& o, const glm::vec3& d, float tMin, float tMax) const {
+  return impl_->trace(o, d, tMin, tMax, true, nullptr) < tMax;
+}
+
+float RayScene::firstHit(const glm::vec3& o, const glm::vec3& d, float tMin, float tMax, int* object) const {
+  return impl_->trace(o, d, tMin, tMax, false, object);
 }
 
 FloatImage exactVisibility(const RayScene& rays, const Light& light, int width, int height,
@@ -176,6 +203,43 @@ VisibilityMetrics compareVisibility(const FloatImage& rendered, const FloatImage
     else ++m.shadowedPixels, m.leakPixels += r >= 0.5f;
   }
   return m;
+}
+
+double contactGapTexels(const FloatImage& rendered, const FloatImage& exact, const std::vector<glm::vec4>& positions,
+                        const RayScene& rays, const Light& light, float groundY, float texelWorld) {
+  constexpr size_t kBins = 64;  // half-texel bins up to 32 texels
+  std::map<int, std::pair<std::vector<long>, std::vector<long>>> casters;  // object -> (shadowed, leaking) per bin
+  for (size_t i = 0; i < exact.pixels.size(); ++i) {
+    const glm::vec4 p = positions[i];
+    if (std::isnan(exact.pixels[i]) || exact.pixels[i] >= 0.5f || p.w <= 0 || std::abs(p.y - groundY) > 1e-3f) continue;
+    glm::vec3 toLight = -light.direction;
+    float tMax = std::numeric_limits<float>::infinity();
+    if (light.type != LightType::Directional) tMax = glm::length(light.position - glm::vec3(p)), toLight = (light.position - glm::vec3(p)) / tMax;
+    int object = -1;
+    const float t = rays.firstHit(glm::vec3(p), toLight, 1e-3f, tMax, &object);
+    const glm::vec3 blocker = glm::vec3(p) + t * toLight;
+    const size_t bin = size_t(2 * glm::length(glm::vec2(blocker.x - p.x, blocker.z - p.z)) / texelWorld);
+    if (!rays.restsOn(object, groundY) || bin >= kBins) continue;
+    auto& [shadowed, leaking] = casters[object];
+    shadowed.resize(kBins), leaking.resize(kBins);
+    ++shadowed[bin];
+    leaking[bin] += rendered.pixels[i] >= 0.5f;
+  }
+  double worst = 0;
+  for (const auto& [object, bins] : casters) {
+    const auto& [shadowed, leaking] = bins;
+    // Bins with fewer than 4 pixels say nothing; a caster with no informative bin is skipped. The
+    // gap counts from the first informative bin, where the camera first sees that caster's shadow.
+    double gap = -1, first = -1;
+    for (size_t b = 0; b < kBins && gap < 0; ++b) {
+      if (shadowed[b] < 4) continue;
+      if (first < 0) first = 0.5 * double(b);
+      if (2 * leaking[b] < shadowed[b]) gap = 0.5 * double(b) - first;
+    }
+    if (gap < 0 && first >= 0) gap = 0.5 * kBins - first;  // every informative bin leaks
+    worst = std::max(worst, gap);
+  }
+  return worst;
 }
 
 std::vector<uint8_t> artifactHeatmap(const FloatImage& rendered, const FloatImage& exact,

@@ -22,6 +22,11 @@ public:
   ~RayScene();
   /// True if a triangle blocks the ray origin + t·dir for tMin < t < tMax.
   bool occluded(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax) const;
+  /// True if scene object `object`'s lowest point lies within 1e-3 of height `y` (it rests there).
+  bool restsOn(int object, float y) const;
+  /// The smallest t in (tMin, tMax) where the ray meets a triangle, or tMax if it meets none;
+  /// `object` (if given) receives the index of the scene object hit, or −1.
+  float firstHit(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax, int* object = nullptr) const;
 
 private:
   struct Impl;
@@ -49,6 +54,16 @@ struct VisibilityMetrics {
 /// Compares `rendered` with `exact` on every pixel where `exact` is not NaN.
 VisibilityMetrics compareVisibility(const FloatImage& rendered, const FloatImage& exact,
                                     const std::vector<glm::vec4>& positions);
+
+/// Peter-panning on the ground: the distance between a caster's contact line and where its shadow
+/// starts, in shadow-map texels, for the worst caster resting on the ground. Every ground pixel (y within 1e-3 of
+/// `groundY`) that is truly in a cast shadow is binned, per caster, by its horizontal distance to the
+/// point that blocks its light (for a caster resting on the ground, its distance from the contact
+/// line), in half-texel bins of at least 4 pixels; a caster's gap is the distance from its first
+/// bin (where the camera first sees its shadow) to its first bin drawn mostly (more than half)
+/// shadowed. It is 0 when nothing on the ground is in a cast shadow, and at most 32 texels.
+double contactGapTexels(const FloatImage& rendered, const FloatImage& exact, const std::vector<glm::vec4>& positions,
+                        const RayScene& rays, const Light& light, float groundY, float texelWorld);
 
 /// An RGBA8 picture of the comparison: the scene's light-facing pixels in grey, acne in red, light
 /// leaks in blue, the rest dark (rows bottom to top).

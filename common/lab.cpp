@@ -3,6 +3,7 @@
 #include "common/context.hpp"
 #include "common/glsl_harness.hpp"
 #include "common/ground_truth.hpp"
+#include "common/shadow_map.hpp"
 #include "common/image.hpp"
 #include "common/variant.hpp"
 
@@ -477,9 +478,9 @@ void Lab::frame(float dt) {
     glViewport(frameSize_.x - s - 8, 8, s, s);
     glDisable(GL_DEPTH_TEST);
     i.inset->use();
-    i.inset->set("u_perspective", light_.perspective ? 1 : 0);
-    i.inset->set("u_near", light_.nearPlane);
-    i.inset->set("u_far", light_.farPlane);
+    i.inset->set("u_perspective", light_.light.type != LightType::Directional ? 1 : 0);
+    i.inset->set("u_near", light_.light.nearPlane);
+    i.inset->set("u_far", light_.light.farPlane);
     glBindTextureUnit(0, light_.depthMap);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glEnable(GL_DEPTH_TEST);
@@ -613,14 +614,20 @@ void Lab::measure() {
   glReadBuffer(GL_COLOR_ATTACHMENT2);
   glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, positions.data());
   if (!i.rays || i.raysCutoff != alphaCutoff_) i.rays = std::make_unique<RayScene>(scene, alphaCutoff_), i.raysCutoff = alphaCutoff_;
-  const FloatImage exact = exactVisibility(*i.rays, scene.lights[size_t(lightIndex)], w, h, positions);
+  const Light& light = light_.depthMap ? light_.light : scene.lights[size_t(lightIndex)];
+  const FloatImage exact = exactVisibility(*i.rays, light, w, h, positions);
   const VisibilityMetrics m = compareVisibility(rendered, exact, positions);
+  double gap = -1;  // the contact gap needs texels of one size: orthographic maps only
+  if (light_.depthMap && light.type == LightType::Directional && light_.mapSize > 0)
+    gap = contactGapTexels(rendered, exact, positions, *i.rays, light, scene.boundsMin.y,
+                           texelWorldSize(light_.viewProj, light_.mapSize));
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  char text[256];
+  char text[320];
   std::snprintf(text, sizeof text,
                 "acne rate %.2f%% (%ld of %ld lit pixels drawn shadowed)\nlight leak %.2f%% (%ld of %ld shadowed pixels "
-                "drawn lit)\n(exact visibility by ray casting, %.0f ms)",
-                100 * m.acneRate(), m.acnePixels, m.litPixels, 100 * m.leakRate(), m.leakPixels, m.shadowedPixels, ms);
+                "drawn lit)\ncontact gap %s texels\n(exact visibility by ray casting, %.0f ms)",
+                100 * m.acneRate(), m.acnePixels, m.litPixels, 100 * m.leakRate(), m.leakPixels, m.shadowedPixels,
+                gap < 0 ? "n/a" : std::to_string(gap).substr(0, std::to_string(gap).find('.') + 2).c_str(), ms);
   i.measured = text;
   const std::vector<uint8_t> heat = artifactHeatmap(rendered, exact, positions);
   if (i.imgui) {

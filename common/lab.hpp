@@ -33,13 +33,12 @@ struct ExerciseStatus {
   std::string message;                           ///< why it is not implemented or failed
 };
 
-/// What the shared debug views need to know about the current shadow-casting light.
+/// The shadow-casting light of the current frame, for the debug views and the measurements.
 struct LightView {
+  Light light;               ///< the light as used this frame (after any lab setting changed it)
   glm::mat4 viewProj{1};     ///< world → light clip space
-  bool perspective = false;  ///< spot/point lights: the depth map is linearised for display
-  float nearPlane = 0.1f;    ///< perspective near plane
-  float farPlane = 100.0f;   ///< perspective far plane
   GLuint depthMap = 0;       ///< the shadow map's depth texture (0 = none yet)
+  int mapSize = 0;           ///< its size in texels
 };
 
 /// Base class of every lab. Override the hooks; use the protected helpers.

@@ -22,7 +22,7 @@ class DepthMapLab : public wb::Lab {
  protected:
   void init() override {
     depthProgram = &loadProgram({{GL_VERTEX_SHADER, "depth.vert"}, {GL_FRAGMENT_SHADER, "depth.frag"}});
-    sceneProgram = &loadProgram({{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "scene.frag"}});
+    sceneProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/scene.vert"}, {GL_FRAGMENT_SHADER, "scene.frag"}});
     // The info panel asks each GLSL exercise once with a sample input whether it is implemented.
     glslExercise("01.3", "exercise.glsl", "worldToShadowCoord(mat4(1.0), vec3(0.0)).x");
     glslExercise("01.4", "exercise.glsl", "hardShadow(wb_tex0, vec3(0.5), 0.0)");
@@ -59,7 +59,7 @@ class DepthMapLab : public wb::Lab {
       depthProgram->set("u_lightViewProj", lightViewProj);
       depthProgram->set("u_alphaCutoff", alphaCutoff());
       gpuScene->draw(*depthProgram);
-      showLight({lightViewProj, spot, light.nearPlane, light.farPlane, shadowMap.texture()});
+      showLight({light, lightViewProj, shadowMap.texture(), shadowMap.size()});
     }
 
     // PASS 2: the camera's view, with the shadow test per pixel.

@@ -1,5 +1,5 @@
 #version 450 core
-// PASS 2 vertex stage: the camera's view of the scene, carrying world position for the shadow lookup.
+// The camera pass vertex stage shared by the labs: world position, normal and uv for the fragment stage.
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec2 a_uv;

@@ -1,0 +1,195 @@
+// Lab 02 tests. Layer 1: each remedy's formula against a double-precision reference or GL state;
+// layer 2: the three bias scenes against golden visibility (./workbook golden 02).
+#include "common/gl.hpp"
+#include "common/variant.hpp"
+#include "exercise.hpp"
+#include "tests/harness/harness.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+using wb::test::GlTest;
+
+// --- 02.1: constant bias in the comparison ---------------------------------------------------------
+TEST_F(GlTest, Ex02_1_BiasedCompareMatchesReference) {
+  std::vector<glm::vec4> in;
+  std::vector<float> want;
+  for (float receiver : {0.2f, 0.5f, 0.8f})
+    for (float delta : {-0.05f, -0.004f, 0.0f, 0.004f, 0.05f})
+      for (float bias : {0.0f, 0.01f, 0.1f}) {
+        const float stored = receiver + delta;
+        in.emplace_back(receiver, stored, bias, 0);
+        // Lit when the receiver moved towards the light by `bias` is not behind the stored depth.
+        want.push_back(double(receiver) - bias <= double(stored) ? 1.0f : 0.0f);
+      }
+  std::vector<glm::vec4> got;
+  WB_RUN_GLSL(got, "02.1", "result.x = biasedCompare(IN(0).x, IN(0).y, IN(0).z);", int(want.size()), 1, in);
+  for (size_t i = 0; i < want.size(); ++i)
+    ASSERT_EQ(got[i].x, want[i]) << "WRONG: receiver " << in[i].x << ", stored " << in[i].y << ", bias " << in[i].z
+                                 << " should be " << (want[i] ? "lit" : "shadowed");
+}
+
+// --- 02.2: slope-scaled bias, clamped --------------------------------------------------------------
+// Reference: min(constant + scale * tan(acos(cosTheta)), max), in double.
+TEST_F(GlTest, Ex02_2_SlopeScaledBiasGrowsWithTheAngleAndIsClamped) {
+  std::vector<glm::vec4> in;
+  std::vector<double> want;
+  for (float c : {1.0f, 0.9f, 0.6f, 0.3f, 0.1f, 0.02f})
+    for (float scale : {0.0f, 0.002f, 0.01f})
+      for (float maxBias : {0.005f, 0.05f}) {
+        in.emplace_back(c, 0.001f, scale, maxBias);
+        want.push_back(std::min(0.001 + scale * std::tan(std::acos(double(c))), double(maxBias)));
+      }
+  std::vector<glm::vec4> got;
+  WB_RUN_GLSL(got, "02.2", "result.x = slopeScaledBias(IN(0).x, IN(0).y, IN(0).z, IN(0).w);", int(want.size()), 1, in);
+  for (size_t i = 0; i < want.size(); ++i)
+    ASSERT_NEAR(got[i].x, want[i], 1e-6 + 1e-4 * want[i])
+        << "WRONG: cosTheta " << in[i].x << ", constant 0.001, scale " << in[i].z << ", max " << in[i].w;
+}
+
+// --- 02.3: rasterizer bias -------------------------------------------------------------------------
+TEST_F(GlTest, Ex02_3_RasterizerBiasSetsPolygonOffset) {
+  WB_TRY_EXERCISE(lab02::applyRasterizerBias(2.5f, 16.0f));
+  GLfloat factor = 0, units = 0;
+  glGetFloatv(GL_POLYGON_OFFSET_FACTOR, &factor);
+  glGetFloatv(GL_POLYGON_OFFSET_UNITS, &units);
+  const bool enabled = glIsEnabled(GL_POLYGON_OFFSET_FILL);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(0, 0);
+  EXPECT_TRUE(enabled) << "WRONG: GL_POLYGON_OFFSET_FILL is not enabled";
+  EXPECT_EQ(factor, 2.5f) << "WRONG: the factor (slope term) should be 2.5";
+  EXPECT_EQ(units, 16.0f) << "WRONG: the units (constant term) should be 16";
+}
+
+// maxZ = 0.75 = 1.5 * 2^-1: exponent -1, so one unit of DepthBias is 2^(-1-23) = 2^-24.
+// maxZ = 0.25 = 1.0 * 2^-2: one unit is 2^-25.
+TEST(Lab02, Ex02_3_D3DDepthBiasRule) {
+  const double u24 = std::ldexp(1.0, -24), u25 = std::ldexp(1.0, -25);
+  struct Case {
+    int depthBias;
+    double slope, clamp, maxSlope;
+    float maxZ;
+    double want;
+  } cases[] = {
+      {100, 0.0, 0.0, 0.0, 0.75f, 100 * u24},
+      {100, 0.0, 0.0, 0.0, 0.25f, 100 * u25},
+      {0, 1.5, 0.0, 0.002, 0.75f, 0.003},
+      {1000, 2.0, 0.0, 0.01, 0.75f, 1000 * u24 + 0.02},
+      {1000, 2.0, 0.005, 0.01, 0.75f, 0.005},           // a positive clamp caps
+      {-1000, -2.0, -0.005, 0.01, 0.75f, -0.005},       // a negative clamp floors
+  };
+  for (const auto& c : cases) {
+    double got = 0;
+    WB_TRY_EXERCISE(got = lab02::d3dDepthBias(c.depthBias, c.slope, c.clamp, c.maxSlope, c.maxZ));
+    EXPECT_NEAR(got, c.want, 1e-12) << "WRONG: DepthBias " << c.depthBias << ", SlopeScaledDepthBias " << c.slope
+                                    << ", clamp " << c.clamp << ", max slope " << c.maxSlope << ", max z " << c.maxZ;
+  }
+}
+
+// --- 02.4: front-face culling ----------------------------------------------------------------------
+TEST_F(GlTest, Ex02_4_CullForDepthPassCullsTheLitFaces) {
+  WB_TRY_EXERCISE(lab02::cullForDepthPass(true));
+  GLint mode = 0;
+  glGetIntegerv(GL_CULL_FACE_MODE, &mode);
+  const bool on = glIsEnabled(GL_CULL_FACE);
+  WB_TRY_EXERCISE(lab02::cullForDepthPass(false));
+  const bool off = !glIsEnabled(GL_CULL_FACE);
+  glDisable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  EXPECT_TRUE(on) << "WRONG: culling is not enabled";
+  EXPECT_EQ(mode, GL_FRONT) << "WRONG: the depth pass must cull the faces turned to the light (GL_FRONT)";
+  EXPECT_TRUE(off) << "WRONG: cullForDepthPass(false) must turn culling off";
+}
+
+// --- 02.5: normal offset ---------------------------------------------------------------------------
+// Reference: p + n * scale * texel * (1 - clamp(n.l, 0, 1)).
+TEST_F(GlTest, Ex02_5_NormalOffsetMovesAlongTheNormal) {
+  std::vector<glm::vec4> in;
+  std::vector<glm::dvec3> want;
+  const glm::vec3 ns[] = {{0, 1, 0}, glm::normalize(glm::vec3(1, 1, 0)), {0, 0, 1}};
+  const glm::vec3 ls[] = {{0, 1, 0}, glm::normalize(glm::vec3(-1, 0.3f, 0.2f)), glm::normalize(glm::vec3(0.5f, 0.5f, 0.7f))};
+  for (const auto& n : ns)
+    for (const auto& l : ls)
+      for (float scale : {0.5f, 2.0f}) {
+        const glm::vec3 p(1.5f, -0.5f, 2.0f);
+        in.emplace_back(p, scale);
+        in.emplace_back(n, 0.02f);
+        in.emplace_back(l, 0);
+        const double slope = 1.0 - std::clamp(double(glm::dot(n, l)), 0.0, 1.0);
+        want.push_back(glm::dvec3(p) + glm::dvec3(n) * (double(scale) * 0.02 * slope));
+      }
+  std::vector<glm::vec4> got;
+  WB_RUN_GLSL(got, "02.5", "result = vec4(normalOffsetPosition(IN(0).xyz, IN(1).xyz, IN(2).xyz, IN(1).w, IN(0).w), 0.0);",
+              int(want.size()), 3, in);
+  for (size_t i = 0; i < want.size(); ++i)
+    for (int a = 0; a < 3; ++a)
+      ASSERT_NEAR(got[i][a], want[i][a], 1e-5) << "WRONG: case " << i << ", coordinate " << "xyz"[a];
+}
+
+// --- 02.6: receiver-plane depth bias ---------------------------------------------------------------
+// A receiver plane z = a u + b v seen through a screen Jacobian J = [du/dx du/dy; dv/dx dv/dy] has
+// dz/dx = a du/dx + b dv/dx and dz/dy = a du/dy + b dv/dy; the exercise must recover (a, b).
+TEST_F(GlTest, Ex02_6_ReceiverPlaneRecoversTheDepthGradient) {
+  std::vector<glm::vec4> in;
+  std::vector<glm::dvec2> want;
+  const glm::vec4 jacobians[] = {{1e-3f, 0, 0, 1e-3f}, {8e-4f, 3e-4f, -2e-4f, 9e-4f}, {-5e-4f, 1e-3f, 7e-4f, 2e-4f}};
+  for (const auto& j : jacobians)
+    for (glm::vec2 ab : {glm::vec2(0.3f, -0.1f), glm::vec2(0, 0), glm::vec2(-1.2f, 2.5f)}) {
+      const glm::vec3 dx(j.x, j.z, ab.x * j.x + ab.y * j.z), dy(j.y, j.w, ab.x * j.y + ab.y * j.w);
+      in.emplace_back(dx, 0);
+      in.emplace_back(dy, 0);
+      want.emplace_back(ab);
+    }
+  std::vector<glm::vec4> got;
+  WB_RUN_GLSL(got, "02.6", "result = vec4(receiverPlaneDepthBias(IN(0).xyz, IN(1).xyz), 0.0, 0.0);", int(want.size()), 2, in);
+  for (size_t i = 0; i < want.size(); ++i)
+    for (int a = 0; a < 2; ++a)
+      ASSERT_NEAR(got[i][a], want[i][a], 2e-3 * (1 + std::abs(want[i][a])))
+          << "WRONG: dz/d" << "uv"[a] << " of case " << i << " should be " << want[i][a];
+}
+
+// Reference: z + offset . dzduv - |dzduv| . texel.
+TEST_F(GlTest, Ex02_6_ReceiverPlaneTapDepth) {
+  std::vector<glm::vec4> in;
+  std::vector<double> want;
+  for (glm::vec2 g : {glm::vec2(0.5f, -0.25f), glm::vec2(0, 0), glm::vec2(-2, 1)})
+    for (glm::vec2 off : {glm::vec2(0, 0), glm::vec2(0.002f, -0.001f), glm::vec2(-0.004f, 0.003f)}) {
+      in.emplace_back(0.6f, g.x, g.y, 0);
+      in.emplace_back(off, 1.0f / 512, 1.0f / 512);
+      want.push_back(0.6 + off.x * g.x + off.y * g.y - (std::abs(g.x) + std::abs(g.y)) / 512.0);
+    }
+  std::vector<glm::vec4> got;
+  WB_RUN_GLSL(got, "02.6", "result.x = receiverPlaneTapDepth(IN(0).x, IN(0).yz, IN(1).xy, IN(1).zw);", int(want.size()), 2, in);
+  for (size_t i = 0; i < want.size(); ++i) ASSERT_NEAR(got[i].x, want[i], 1e-6) << "WRONG: case " << i;
+}
+
+// --- Layer 2: the bias scenes against golden visibility -------------------------------------------
+// Visibility is fractional with PCF; a pixel fails beyond 0.1 (and no 3x3 neighbour within it).
+namespace {
+const float kTol = 0.1f;
+const double kMaxFraction = 0.005;
+std::vector<std::string> with(const std::string& scene, std::vector<std::string> sets) {
+  std::vector<std::string> args = {"--scene", std::string(wb::variant::kSourceDir) + "/scenes/" + scene};
+  for (auto& s : sets) args.insert(args.end(), {"--set", s});
+  return args;
+}
+}  // namespace
+
+TEST(Lab02, Ex02_1_SceneConstant) {
+  wb::test::expectSceneMatchesGolden("02.1", "grazing_constant", with("bias_grazing.json", {"bias.method=constant"}), kTol, kMaxFraction);
+}
+TEST(Lab02, Ex02_2_SceneSlope) {
+  wb::test::expectSceneMatchesGolden("02.2", "grazing_slope", with("bias_grazing.json", {"bias.method=slope", "light.elevation=12"}), kTol, kMaxFraction);
+}
+TEST(Lab02, Ex02_3_ScenePolygonOffset) {
+  wb::test::expectSceneMatchesGolden("02.3", "grazing_polygon_offset", with("bias_grazing.json", {"bias.method=polygon_offset"}), kTol, kMaxFraction);
+}
+TEST(Lab02, Ex02_4_SceneThinWalls) {
+  wb::test::expectSceneMatchesGolden("02.4", "thin_walls_front_faces", with("bias_thin_walls.json", {"bias.method=front_faces"}), kTol, kMaxFraction);
+}
+TEST(Lab02, Ex02_5_SceneNormalOffset) {
+  wb::test::expectSceneMatchesGolden("02.5", "grazing_normal_offset", with("bias_grazing.json", {"bias.method=normal_offset", "bias.normal_offset=2"}), kTol, kMaxFraction);
+}
+TEST(Lab02, Ex02_6_SceneReceiverPlane) {
+  wb::test::expectSceneMatchesGolden("02.6", "resting_receiver_plane", with("bias_resting.json", {"bias.method=receiver_plane", "pcf.kernel=5"}), kTol, kMaxFraction);
+}
