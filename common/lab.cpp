@@ -39,7 +39,9 @@ const char* const kUsage =
     "  --dump-visibility F   write per-pixel light visibility (1 lit, 0 shadowed) as a float PFM\n"
     "  --bench F.csv         time every pass (GPU ms) and the frame (wall ms) over the frames\n"
     "  --metrics             compare with exact (ray-cast) visibility: acne rate and light leak\n"
-    "  --heatmap F.png       with --metrics: write acne (red) and leaks (blue) as a picture\n";
+    "  --heatmap F.png       with --metrics: write acne (red) and leaks (blue) as a picture\n"
+    "  --sweep key=a,b,...   render and measure every combination of the listed settings (repeatable)\n"
+    "  --sweep-csv F.csv     with --sweep: also write the table as CSV\n";
 
 const int kMapSizes[] = {512, 1024, 2048, 4096, 8192};
 
@@ -85,6 +87,11 @@ struct Lab::Impl {
   std::string measured;
   Texture heatmap;
   bool showHeatmap = false;
+  VisibilityMetrics lastMetrics;
+  double lastGap = -1;
+  // --sweep key=v1,v2,...: every combination is rendered and measured; --sweep-csv saves the table.
+  std::vector<std::pair<std::string, std::vector<std::string>>> sweeps;
+  std::string sweepCsv;
   int frameIndex = 0, warmup = 0;
   double wallSum = 0;
   int wallCount = 0;
@@ -286,6 +293,17 @@ int Lab::main(int argc, char** argv) {
         i.opt.bench = value();
       else if (arg == "--metrics")
         i.opt.metrics = true;
+      else if (arg == "--sweep") {
+        const std::string v = value();
+        const auto eq = v.find('=');
+        if (eq == std::string::npos || eq + 1 >= v.size())
+          throw UsageError("--sweep expects key=v1,v2,..., got '" + v + "'");
+        std::vector<std::string> values;
+        std::stringstream list(v.substr(eq + 1));
+        for (std::string item; std::getline(list, item, ',');) values.push_back(item);
+        i.sweeps.emplace_back(v.substr(0, eq), values);
+      } else if (arg == "--sweep-csv")
+        i.sweepCsv = value();
       else if (arg == "--heatmap")
         i.opt.heatmap = value(), i.opt.metrics = true;
       else if (arg == "--size") {
@@ -307,8 +325,11 @@ int Lab::main(int argc, char** argv) {
       } else
         throw UsageError("unknown option '" + arg +
                          "'; accepted: --headless --scene --size --set --frames "
-                         "--screenshot --dump-visibility --bench --metrics --heatmap --list-settings --help");
+                         "--screenshot --dump-visibility --bench --metrics --heatmap --sweep --sweep-csv --list-settings --help");
     }
+    for (const auto& s : sets) settings.assign(s);
+    for (const auto& [key, values] : i.sweeps)  // check every swept value now, before any rendering
+      for (const auto& v : values) settings.assign(key + "=" + v);
     for (const auto& s : sets) settings.assign(s);
     if (i.opt.listSettings) {
       std::printf("settings of lab %s (%s):\n", number_.c_str(), title_.c_str());
@@ -357,6 +378,8 @@ int Lab::main(int argc, char** argv) {
     }
     init();
     probeGlslExercises();
+
+    if (!i.sweeps.empty()) return sweep();
 
     // ---- The frame loop. ----
     auto last = std::chrono::steady_clock::now();
@@ -602,7 +625,58 @@ void Lab::drawShell() {
   ImGui::End();
 }
 
-void Lab::measure() {
+int Lab::sweep() {
+  auto& i = *impl_;
+  std::vector<std::string> header;
+  for (const auto& sw : i.sweeps) header.push_back(sw.first);
+  for (const char* c : {"acne_%", "leak_%", "contact_gap_texels", "gpu_ms"}) header.emplace_back(c);
+  std::ofstream csv;
+  if (!i.sweepCsv.empty()) {
+    csv.open(i.sweepCsv);
+    if (!csv) throw UsageError("cannot write --sweep-csv file '" + i.sweepCsv + "'");
+  }
+  auto row = [&](const std::vector<std::string>& cells) {
+    std::string line = "|";
+    for (const auto& c : cells) line += " " + c + " |";
+    std::printf("%s\n", line.c_str());
+    for (size_t c = 0; c < cells.size(); ++c) csv << (c ? "," : "") << cells[c];
+    if (csv.is_open()) csv << "\n";
+  };
+  row(header);
+  std::string rule = "|";
+  for (size_t c = 0; c < header.size(); ++c) rule += "---|";
+  std::printf("%s\n", rule.c_str());
+  size_t total = 1;
+  for (const auto& sw : i.sweeps) total *= sw.second.size();
+  for (size_t n = 0; n < total; ++n) {
+    std::vector<std::string> cells;
+    size_t k = n;
+    for (auto it = i.sweeps.rbegin(); it != i.sweeps.rend(); ++it) {  // the last key varies fastest
+      settings.assign(it->first + "=" + it->second[k % it->second.size()]);
+      cells.insert(cells.begin(), it->second[k % it->second.size()]);
+      k /= it->second.size();
+    }
+    std::fprintf(stderr, "\rsweep %zu/%zu", n + 1, total);
+    for (int f = 0; f < std::max(1, i.opt.frames); ++f) frame(1.0f / 60);
+    glFinish();
+    i.collect(true, false);
+    measure(false);
+    double gpu = 0;
+    for (const auto& [name, s] : i.passes) gpu += s.last;
+    char buf[4][32];
+    std::snprintf(buf[0], 32, "%.2f", 100 * i.lastMetrics.acneRate());
+    std::snprintf(buf[1], 32, "%.2f", 100 * i.lastMetrics.leakRate());
+    std::snprintf(buf[2], 32, i.lastGap < 0 ? "n/a" : "%.1f", i.lastGap);
+    std::snprintf(buf[3], 32, "%.2f", gpu);
+    for (auto& b : buf) cells.emplace_back(b);
+    row(cells);
+  }
+  std::fprintf(stderr, "\r%*s\r", 24, "");
+  if (csv.is_open()) std::printf("wrote %s\n", fs::absolute(i.sweepCsv).string().c_str());
+  return 0;
+}
+
+void Lab::measure(bool report) {
   auto& i = *impl_;
   const int w = frameSize_.x, h = frameSize_.y;
   const auto t0 = std::chrono::steady_clock::now();
@@ -629,6 +703,9 @@ void Lab::measure() {
                 100 * m.acneRate(), m.acnePixels, m.litPixels, 100 * m.leakRate(), m.leakPixels, m.shadowedPixels,
                 gap < 0 ? "n/a" : std::to_string(gap).substr(0, std::to_string(gap).find('.') + 2).c_str(), ms);
   i.measured = text;
+  i.lastMetrics = m;
+  i.lastGap = gap;
+  if (!report) return;
   const std::vector<uint8_t> heat = artifactHeatmap(rendered, exact, positions);
   if (i.imgui) {
     i.heatmap = makeTexture2D(GL_RGBA8, w, h);

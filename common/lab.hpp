@@ -133,7 +133,8 @@ class Lab {
   void drawShell();
   void probeGlslExercises();
   void writeOutputs();
-  void measure();
+  void measure(bool report = true);
+  int sweep();
 
   std::string number_, title_, defaultScene_;
   glm::ivec2 frameSize_{960, 540};

@@ -100,7 +100,7 @@ private:
   float maxBias = 0.01f;       // slope: clamp
   float offsetFactor = 1.5f;   // polygon_offset: slope factor
   float offsetUnits = 4.0f;    // polygon_offset: units of the smallest depth step
-  float normalOffset = 1.0f;   // normal_offset: texels
+  float normalOffset = 3.0f;   // normal_offset: texels
   int kernel = 0;              // PCF radius index: width 1, 3, 5, 7
   float elevation = 0;         // degrees; 0 keeps the scene's light
 };
