@@ -13,14 +13,14 @@ namespace wb {
 
 struct RayScene::Impl {
   struct Triangle {
-    glm::vec3 a, e1, e2;   // a, b − a, c − a
+    glm::vec3 a, e1, e2;  // a, b − a, c − a
     glm::vec2 uvA, uvE1, uvE2;
-    int texture = -1;      // index into `textures`, −1 = opaque
-    int object = -1;       // index of the scene object it belongs to
+    int texture = -1;  // index into `textures`, −1 = opaque
+    int object = -1;   // index of the scene object it belongs to
   };
   struct Node {
     glm::vec3 lo, hi;
-    int first, count;  // a leaf holds triangles [first, first + count)
+    int first, count;           // a leaf holds triangles [first, first + count)
     int left = -1, right = -1;  // an inner node (count = 0) has two children
   };
   struct Alpha {
@@ -116,7 +116,8 @@ RayScene::RayScene(const Scene& scene, float alphaCutoff) : impl_(std::make_uniq
     }
     const auto& v = o.mesh.vertices;
     m.objectMinY.push_back(1e30f);
-    for (const Vertex& vert : v) m.objectMinY.back() = std::min(m.objectMinY.back(), (o.model * glm::vec4(vert.position, 1)).y);
+    for (const Vertex& vert : v)
+      m.objectMinY.back() = std::min(m.objectMinY.back(), (o.model * glm::vec4(vert.position, 1)).y);
     for (size_t i = 0; i + 2 < o.mesh.indices.size(); i += 3) {
       const Vertex &a = v[o.mesh.indices[i]], &b = v[o.mesh.indices[i + 1]], &c = v[o.mesh.indices[i + 2]];
       const glm::vec3 pa(o.model * glm::vec4(a.position, 1)), pb(o.model * glm::vec4(b.position, 1)),
@@ -159,7 +160,8 @@ float RayScene::Impl::trace(const glm::vec3& o, const glm::vec3& d, float tMin, 
 }
 
 bool RayScene::restsOn(int object, float y) const {
-  return object >= 0 && size_t(object) < impl_->objectMinY.size() && std::abs(impl_->objectMinY[size_t(object)] - y) < 1e-3f;
+  return object >= 0 && size_t(object) < impl_->objectMinY.size() &&
+         std::abs(impl_->objectMinY[size_t(object)] - y) < 1e-3f;
 }
 
 bool RayScene::occluded(const glm::vec3& o, const glm::vec3& d, float tMin, float tMax) const {
@@ -177,16 +179,25 @@ FloatImage exactVisibility(const RayScene& rays, const Light& light, int width, 
   const float cosCone = std::cos(glm::radians(light.angle));
   for (size_t i = 0; i < out.pixels.size(); ++i) {
     const glm::vec4 p = positions[i];
-    if (p.w == 0) { out.pixels[i] = nan; continue; }            // background
+    if (p.w == 0) {
+      out.pixels[i] = nan;
+      continue;
+    }  // background
     glm::vec3 toLight = -light.direction;
     float tMax = std::numeric_limits<float>::infinity();
     if (light.type != LightType::Directional) {
       toLight = light.position - glm::vec3(p);
       tMax = glm::length(toLight);
       toLight /= tMax;
-      if (light.type == LightType::Spot && glm::dot(-toLight, light.direction) < cosCone) { out.pixels[i] = nan; continue; }
+      if (light.type == LightType::Spot && glm::dot(-toLight, light.direction) < cosCone) {
+        out.pixels[i] = nan;
+        continue;
+      }
     }
-    if (p.w < 0) { out.pixels[i] = 0; continue; }               // facing away: an attached shadow
+    if (p.w < 0) {
+      out.pixels[i] = 0;
+      continue;
+    }  // facing away: an attached shadow
     // Start a little way along the ray so the surface does not shadow itself through rounding.
     out.pixels[i] = rays.occluded(glm::vec3(p), toLight, 1e-3f, tMax) ? 0.0f : 1.0f;
   }
@@ -199,22 +210,25 @@ VisibilityMetrics compareVisibility(const FloatImage& rendered, const FloatImage
   for (size_t i = 0; i < exact.pixels.size(); ++i) {
     const float e = exact.pixels[i], r = rendered.pixels[i];
     if (std::isnan(e) || positions[i].w <= 0) continue;
-    if (e >= 0.5f) ++m.litPixels, m.acnePixels += r < 0.5f;
-    else ++m.shadowedPixels, m.leakPixels += r >= 0.5f;
+    if (e >= 0.5f)
+      ++m.litPixels, m.acnePixels += r < 0.5f;
+    else
+      ++m.shadowedPixels, m.leakPixels += r >= 0.5f;
   }
   return m;
 }
 
 double contactGapTexels(const FloatImage& rendered, const FloatImage& exact, const std::vector<glm::vec4>& positions,
                         const RayScene& rays, const Light& light, float groundY, float texelWorld) {
-  constexpr size_t kBins = 64;  // half-texel bins up to 32 texels
+  constexpr size_t kBins = 64;                                             // half-texel bins up to 32 texels
   std::map<int, std::pair<std::vector<long>, std::vector<long>>> casters;  // object -> (shadowed, leaking) per bin
   for (size_t i = 0; i < exact.pixels.size(); ++i) {
     const glm::vec4 p = positions[i];
     if (std::isnan(exact.pixels[i]) || exact.pixels[i] >= 0.5f || p.w <= 0 || std::abs(p.y - groundY) > 1e-3f) continue;
     glm::vec3 toLight = -light.direction;
     float tMax = std::numeric_limits<float>::infinity();
-    if (light.type != LightType::Directional) tMax = glm::length(light.position - glm::vec3(p)), toLight = (light.position - glm::vec3(p)) / tMax;
+    if (light.type != LightType::Directional)
+      tMax = glm::length(light.position - glm::vec3(p)), toLight = (light.position - glm::vec3(p)) / tMax;
     int object = -1;
     const float t = rays.firstHit(glm::vec3(p), toLight, 1e-3f, tMax, &object);
     const glm::vec3 blocker = glm::vec3(p) + t * toLight;

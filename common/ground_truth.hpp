@@ -15,7 +15,7 @@ namespace wb {
 
 /// The scene's triangles in world space, in a bounding-volume hierarchy for shadow rays.
 class RayScene {
-public:
+ public:
   /// Builds the hierarchy; textured objects are alpha-tested with `alphaCutoff` (their texture is
   /// read with stb_image, as the renderer reads it).
   RayScene(const Scene& scene, float alphaCutoff);
@@ -28,7 +28,7 @@ public:
   /// `object` (if given) receives the index of the scene object hit, or −1.
   float firstHit(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax, int* object = nullptr) const;
 
-private:
+ private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

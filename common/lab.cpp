@@ -3,8 +3,8 @@
 #include "common/context.hpp"
 #include "common/glsl_harness.hpp"
 #include "common/ground_truth.hpp"
-#include "common/shadow_map.hpp"
 #include "common/image.hpp"
+#include "common/shadow_map.hpp"
 #include "common/variant.hpp"
 
 #define GLFW_INCLUDE_NONE
@@ -323,9 +323,10 @@ int Lab::main(int argc, char** argv) {
           throw UsageError("bad --frames '" + v + "': expected a whole number of at least 1");
         }
       } else
-        throw UsageError("unknown option '" + arg +
-                         "'; accepted: --headless --scene --size --set --frames "
-                         "--screenshot --dump-visibility --bench --metrics --heatmap --sweep --sweep-csv --list-settings --help");
+        throw UsageError(
+            "unknown option '" + arg +
+            "'; accepted: --headless --scene --size --set --frames "
+            "--screenshot --dump-visibility --bench --metrics --heatmap --sweep --sweep-csv --list-settings --help");
     }
     for (const auto& s : sets) settings.assign(s);
     for (const auto& [key, values] : i.sweeps)  // check every swept value now, before any rendering
@@ -365,8 +366,8 @@ int Lab::main(int argc, char** argv) {
         std::vector<ShaderStage>{{GL_VERTEX_SHADER, "wb/frustum.vert"}, {GL_FRAGMENT_SHADER, "wb/flat.frag"}});
     i.inset = std::make_unique<Program>(
         std::vector<ShaderStage>{{GL_VERTEX_SHADER, "wb/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "wb/depth_view.frag"}});
-    i.overlay = std::make_unique<Program>(std::vector<ShaderStage>{{GL_VERTEX_SHADER, "wb/fullscreen.vert"},
-                                                                   {GL_FRAGMENT_SHADER, "wb/overlay.frag"}});
+    i.overlay = std::make_unique<Program>(
+        std::vector<ShaderStage>{{GL_VERTEX_SHADER, "wb/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "wb/overlay.frag"}});
     gpuScene = std::make_unique<GpuScene>(scene);
     if (!i.ctx->headless()) {
       IMGUI_CHECKVERSION();
@@ -687,7 +688,8 @@ void Lab::measure(bool report) {
   std::vector<glm::vec4> positions(size_t(w) * size_t(h));
   glReadBuffer(GL_COLOR_ATTACHMENT2);
   glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, positions.data());
-  if (!i.rays || i.raysCutoff != alphaCutoff_) i.rays = std::make_unique<RayScene>(scene, alphaCutoff_), i.raysCutoff = alphaCutoff_;
+  if (!i.rays || i.raysCutoff != alphaCutoff_)
+    i.rays = std::make_unique<RayScene>(scene, alphaCutoff_), i.raysCutoff = alphaCutoff_;
   const Light& light = light_.depthMap ? light_.light : scene.lights[size_t(lightIndex)];
   const FloatImage exact = exactVisibility(*i.rays, light, w, h, positions);
   const VisibilityMetrics m = compareVisibility(rendered, exact, positions);
@@ -697,11 +699,12 @@ void Lab::measure(bool report) {
                            texelWorldSize(light_.viewProj, light_.mapSize));
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   char text[320];
-  std::snprintf(text, sizeof text,
-                "acne rate %.2f%% (%ld of %ld lit pixels drawn shadowed)\nlight leak %.2f%% (%ld of %ld shadowed pixels "
-                "drawn lit)\ncontact gap %s texels\n(exact visibility by ray casting, %.0f ms)",
-                100 * m.acneRate(), m.acnePixels, m.litPixels, 100 * m.leakRate(), m.leakPixels, m.shadowedPixels,
-                gap < 0 ? "n/a" : std::to_string(gap).substr(0, std::to_string(gap).find('.') + 2).c_str(), ms);
+  std::snprintf(
+      text, sizeof text,
+      "acne rate %.2f%% (%ld of %ld lit pixels drawn shadowed)\nlight leak %.2f%% (%ld of %ld shadowed pixels "
+      "drawn lit)\ncontact gap %s texels\n(exact visibility by ray casting, %.0f ms)",
+      100 * m.acneRate(), m.acnePixels, m.litPixels, 100 * m.leakRate(), m.leakPixels, m.shadowedPixels,
+      gap < 0 ? "n/a" : std::to_string(gap).substr(0, std::to_string(gap).find('.') + 2).c_str(), ms);
   i.measured = text;
   i.lastMetrics = m;
   i.lastGap = gap;

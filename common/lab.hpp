@@ -35,10 +35,10 @@ struct ExerciseStatus {
 
 /// The shadow-casting light of the current frame, for the debug views and the measurements.
 struct LightView {
-  Light light;               ///< the light as used this frame (after any lab setting changed it)
-  glm::mat4 viewProj{1};     ///< world → light clip space
-  GLuint depthMap = 0;       ///< the shadow map's depth texture (0 = none yet)
-  int mapSize = 0;           ///< its size in texels
+  Light light;            ///< the light as used this frame (after any lab setting changed it)
+  glm::mat4 viewProj{1};  ///< world → light clip space
+  GLuint depthMap = 0;    ///< the shadow map's depth texture (0 = none yet)
+  int mapSize = 0;        ///< its size in texels
 };
 
 /// Base class of every lab. Override the hooks; use the protected helpers.

@@ -12,7 +12,7 @@ namespace wb {
 /// A square depth-only render target: GL_DEPTH_COMPONENT32F, nearest filtering, and a border of
 /// depth 1 so lookups outside the map read "nothing blocks the light".
 class ShadowMap {
-public:
+ public:
   /// (Re)allocates the map when `size` differs from the current size.
   void resize(int size);
   /// Binds the framebuffer, sets the viewport to the whole map and clears depth to 1.
@@ -22,7 +22,7 @@ public:
   /// Width and height in texels (0 before the first resize).
   int size() const { return size_; }
 
-private:
+ private:
   Texture texture_;
   Framebuffer fbo_;
   int size_ = 0;

@@ -16,14 +16,16 @@
 namespace {
 
 class BiasLab : public wb::Lab {
-public:
+ public:
   enum Method { None, Constant, Slope, PolygonOffset, FrontFaces, NormalOffset, ReceiverPlane };
 
   BiasLab() : Lab("scenes/bias_grazing.json") {
-    settings.addChoice("bias.method", method,
-                       {"none", "constant", "slope", "polygon_offset", "front_faces", "normal_offset", "receiver_plane"},
-                       "how the depth comparison is kept from shadowing surfaces by themselves");
-    settings.add("bias.slope_scale", slopeScale, 0.0f, 0.02f, "slope: bias per unit of tan(angle between normal and light)");
+    settings.addChoice(
+        "bias.method", method,
+        {"none", "constant", "slope", "polygon_offset", "front_faces", "normal_offset", "receiver_plane"},
+        "how the depth comparison is kept from shadowing surfaces by themselves");
+    settings.add("bias.slope_scale", slopeScale, 0.0f, 0.02f,
+                 "slope: bias per unit of tan(angle between normal and light)");
     settings.add("bias.max", maxBias, 0.0f, 0.05f, "slope: the clamp on the slope-scaled bias");
     settings.add("bias.offset_factor", offsetFactor, 0.0f, 8.0f, "polygon_offset: glPolygonOffset factor (slope)");
     settings.add("bias.offset_units", offsetUnits, 0.0f, 256.0f, "polygon_offset: glPolygonOffset units (constant)");
@@ -32,15 +34,17 @@ public:
     settings.add("light.elevation", elevation, 0.0f, 89.0f, "sun elevation in degrees (0: as in the scene file)");
   }
 
-protected:
+ protected:
   void init() override {
     depthProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/depth.vert"}, {GL_FRAGMENT_SHADER, "wb/depth.frag"}});
     sceneProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/scene.vert"}, {GL_FRAGMENT_SHADER, "scene.frag"}});
     glslExercise("02.1", "exercise.glsl", "biasedCompare(0.5, 0.5, 0.0)");
     glslExercise("02.2", "exercise.glsl", "slopeScaledBias(0.5, 0.0, 0.0, 1.0)");
-    glslExercise("02.5", "exercise.glsl", "normalOffsetPosition(vec3(0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), 1.0, 1.0).x");
-    glslExercise("02.6", "exercise.glsl", "receiverPlaneDepthBias(vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0)).x + "
-                                          "receiverPlaneTapDepth(0.5, vec2(0.0), vec2(0.0), vec2(0.0))");
+    glslExercise("02.5", "exercise.glsl",
+                 "normalOffsetPosition(vec3(0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), 1.0, 1.0).x");
+    glslExercise("02.6", "exercise.glsl",
+                 "receiverPlaneDepthBias(vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0)).x + "
+                 "receiverPlaneTapDepth(0.5, vec2(0.0), vec2(0.0), vec2(0.0))");
     attempt("02.3", [] { lab02::d3dDepthBias(0, 0, 0, 0, 0.5f); });
     attempt("02.4", [] { lab02::cullForDepthPass(false); });
   }
@@ -60,7 +64,8 @@ protected:
     {
       auto timer = timePass("shadow");
       shadowMap.begin();
-      if (method == PolygonOffset) ready = attempt("02.3", [&] { lab02::applyRasterizerBias(offsetFactor, offsetUnits); });
+      if (method == PolygonOffset)
+        ready = attempt("02.3", [&] { lab02::applyRasterizerBias(offsetFactor, offsetUnits); });
       if (method == FrontFaces) ready = attempt("02.4", [&] { lab02::cullForDepthPass(true); });
       depthProgram->set("u_lightViewProj", lightViewProj);
       depthProgram->set("u_alphaCutoff", alphaCutoff());
@@ -91,18 +96,18 @@ protected:
     gpuScene->draw(p);
   }
 
-private:
+ private:
   wb::Program* depthProgram = nullptr;  // PASS 1
   wb::Program* sceneProgram = nullptr;  // PASS 2
   wb::ShadowMap shadowMap;
-  int method = Constant;       // which remedy (see the bias.method setting)
-  float slopeScale = 0.002f;   // slope: bias per unit tan(theta)
-  float maxBias = 0.01f;       // slope: clamp
-  float offsetFactor = 1.5f;   // polygon_offset: slope factor
-  float offsetUnits = 4.0f;    // polygon_offset: units of the smallest depth step
-  float normalOffset = 3.0f;   // normal_offset: texels
-  int kernel = 0;              // PCF radius index: width 1, 3, 5, 7
-  float elevation = 0;         // degrees; 0 keeps the scene's light
+  int method = Constant;      // which remedy (see the bias.method setting)
+  float slopeScale = 0.002f;  // slope: bias per unit tan(theta)
+  float maxBias = 0.01f;      // slope: clamp
+  float offsetFactor = 1.5f;  // polygon_offset: slope factor
+  float offsetUnits = 4.0f;   // polygon_offset: units of the smallest depth step
+  float normalOffset = 3.0f;  // normal_offset: texels
+  int kernel = 0;             // PCF radius index: width 1, 3, 5, 7
+  float elevation = 0;        // degrees; 0 keeps the scene's light
 };
 
 }  // namespace

@@ -10,10 +10,10 @@
 
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <cmath>
 #include <limits>
 #include <sstream>
 
@@ -48,7 +48,8 @@ struct LabResult {
 
 // Runs the sample lab with `args` and no display; captures its exit code and output.
 LabResult runLab(const std::string& args, const std::string& exe = wb::variant::kLabExe) {
-  const fs::path log = scratch("cli") / "out.log";
+  // One log per test: ctest runs the tests of this file in parallel processes.
+  const fs::path log = scratch("cli") / (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".log");
   const std::string cmd = "cd " + scratch("cli").string() + " && env -u DISPLAY -u WAYLAND_DISPLAY timeout 60 " + exe +
                           " " + args + " >" + log.string() + " 2>&1";
   const int status = std::system(cmd.c_str());
@@ -203,7 +204,7 @@ TEST(GroundTruth, ExactVisibilityOfABoxOnTheGround) {
   struct Probe {
     glm::vec3 p;
     float expected;
-  } probes[] = {{{1.4f, 0, 0}, 0}, {{1.6f, 0, 0}, 1}, {{-0.6f, 0, 0}, 1}, {{0.9f, 0, 0.4f}, 0},
+  } probes[] = {{{1.4f, 0, 0}, 0},    {{1.6f, 0, 0}, 1},       {{-0.6f, 0, 0}, 1}, {{0.9f, 0, 0.4f}, 0},
                 {{0.9f, 0, 0.6f}, 1}, {{0.2f, 1.0f, 0.1f}, 1}, {{3, 0, -2}, 1}};
   std::vector<glm::vec4> positions;
   for (const auto& pr : probes) positions.emplace_back(pr.p, 1);
@@ -211,7 +212,8 @@ TEST(GroundTruth, ExactVisibilityOfABoxOnTheGround) {
   positions.emplace_back(2, 0, 0, -1);  // facing away from the light: shadowed
   const wb::FloatImage exact = wb::exactVisibility(rays, scene.lights[0], int(positions.size()), 1, positions);
   for (size_t i = 0; i < std::size(probes); ++i)
-    EXPECT_EQ(exact.pixels[i], probes[i].expected) << "point (" << probes[i].p.x << ", " << probes[i].p.y << ", " << probes[i].p.z << ")";
+    EXPECT_EQ(exact.pixels[i], probes[i].expected)
+        << "point (" << probes[i].p.x << ", " << probes[i].p.y << ", " << probes[i].p.z << ")";
   EXPECT_TRUE(std::isnan(exact.pixels[std::size(probes)]));
   EXPECT_EQ(exact.pixels[std::size(probes) + 1], 0);
 }
@@ -235,7 +237,8 @@ TEST(GroundTruth, MetricsCountAcneAndLeaks) {
 TEST(GroundTruth, TheSolutionsAcneAndLeaksFollowTheBias) {
   if (!*wb::variant::kSolutionExe) GTEST_SKIP() << "no solution build in this edition";
   auto rates = [](const std::string& bias) {
-    const LabResult r = runLab("--headless --size 320x180 --metrics --set shadow.bias=" + bias, wb::variant::kSolutionExe);
+    const LabResult r =
+        runLab("--headless --size 320x180 --metrics --set shadow.bias=" + bias, wb::variant::kSolutionExe);
     double acne = -1, leak = -1;
     std::sscanf(r.output.c_str(), "acne rate %lf%% %*[^\n]\nlight leak %lf%%", &acne, &leak);
     EXPECT_EQ(r.code, 0) << r.output;

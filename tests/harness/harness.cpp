@@ -72,52 +72,80 @@ std::vector<glm::vec4> runExercise(const std::string& id, const std::string& bod
                        std::vector<GLuint>(textures.begin(), textures.end()));
 }
 
-void expectSceneMatchesGolden(const std::string& id, const std::string& name, const std::vector<std::string>& args,
-                              float tolerance, double maxFailingFraction) {
-  const fs::path out = fs::path(variant::kOutputDir) / ("Ex" + id + "_" + name);
+// Runs the lab headless for exercise `id` with GLSL isolation (the exercise's own chunk from this
+// build, everything else from the solution: a GLSL exercise then runs in the solution's app, so C++
+// stubs cannot block it, and a C++ exercise runs in this build's app with the solution's GLSL).
+// Returns the log, or fails the test with ERROR / NOT IMPLEMENTED.
+static ::testing::AssertionResult runIsolated(const std::string& id, const fs::path& out,
+                                              const std::vector<std::string>& args, std::string& logText) {
   fs::create_directories(out);
-  const fs::path golden = fs::path(variant::kSourceDir) / "tests/golden" / variant::kLab / (name + ".pfm");
-
-  // GLSL isolation: the exercise's own chunk from this build, everything else from the solution.
-  // A GLSL exercise then runs in the solution's app (so C++ stubs cannot block it); a C++ exercise
-  // runs in this build's app with the solution's GLSL.
   std::string env = "WB_STRICT_GL=1 ";
   std::string exe = variant::kLabExe;
-  const bool haveSolution = *variant::kSolutionDir != '\0' && !updatingGolden();
-  if (haveSolution) {
+  if (*variant::kSolutionDir != '\0' && !updatingGolden()) {
     const std::string mine = readFile(findShaderFile("exercise.glsl", shaderSearchPath()));
-    if (mine.find("// EXERCISE " + id) != std::string::npos)
-      exe = variant::kSolutionExe[0] ? variant::kSolutionExe : exe;
+    if (mine.find("// EXERCISE " + id) != std::string::npos && variant::kSolutionExe[0]) exe = variant::kSolutionExe;
     std::ofstream(out / "exercise.glsl") << isolatedExerciseSource("exercise.glsl", id);
     env += "WB_SHADER_OVERLAY=" + quote(out.string()) + " ";
   }
-  const fs::path pfm = out / "result.pfm", log = out / "lab.log";
-  std::string cmd =
-      env + "timeout 120 " + quote(exe) + " --headless --size 256x256 --dump-visibility " + quote(pfm.string());
+  const fs::path log = out / "lab.log";
+  std::string cmd = env + "timeout 120 " + quote(exe) + " --headless";
   for (const auto& a : args) cmd += " " + quote(a);
-  fs::remove(pfm);
   const int status = std::system((cmd + " >" + quote(log.string()) + " 2>&1").c_str());
   const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128;
-  if (code != 0 || !fs::exists(pfm)) {
+  logText = readFile(log);
+  if (code != 0) {
     // The first line names the cause (a compile error's file:line when there is one).
     std::string cause, last;
-    std::istringstream lines(readFile(log));
+    std::istringstream lines(logText);
     for (std::string l; std::getline(lines, l);) {
       if (!l.empty()) last = l;
       if (cause.empty() && l.find(": error") != std::string::npos) cause = l;
     }
-    FAIL() << "ERROR: the lab " << (code == 124 ? "timed out" : "failed (exit " + std::to_string(code) + ")") << ": "
-           << (cause.empty() ? last : cause) << "\n"
-           << readFile(log) << "command: " << cmd;
+    return ::testing::AssertionFailure() << "ERROR: the lab "
+                                         << (code == 124 ? "timed out" : "failed (exit " + std::to_string(code) + ")")
+                                         << ": " << (cause.empty() ? last : cause) << "\n"
+                                         << logText << "command: " << cmd;
   }
   // The app probes every exercise; a stub whose effect cannot be seen in pixels (an alpha test
   // that keeps everything) is still reported as not implemented.
-  {
-    std::istringstream lines(readFile(log));
-    for (std::string l; std::getline(lines, l);)
-      if (l.rfind("Exercise " + id + " (", 0) == 0 && l.find("not implemented yet") != std::string::npos)
-        FAIL() << "NOT IMPLEMENTED: " << l;
+  std::istringstream lines(logText);
+  for (std::string l; std::getline(lines, l);)
+    if (l.rfind("Exercise " + id + " (", 0) == 0 && l.find("not implemented yet") != std::string::npos)
+      return ::testing::AssertionFailure() << "NOT IMPLEMENTED: " << l;
+  return ::testing::AssertionSuccess();
+}
+
+SceneMetrics measureScene(const std::string& id, const std::string& name, const std::vector<std::string>& args) {
+  std::vector<std::string> all = {"--size", "480x270", "--metrics"};
+  all.insert(all.end(), args.begin(), args.end());
+  std::string log;
+  SceneMetrics m;
+  const auto ok = runIsolated(id, fs::path(variant::kOutputDir) / ("Ex" + id + "_" + name), all, log);
+  if (!ok) {
+    m.failure = ok.message();
+    return m;
   }
+  const auto at = log.find("acne rate");
+  if (at == std::string::npos ||
+      std::sscanf(log.c_str() + at, "acne rate %lf%% %*[^\n]\nlight leak %lf%% %*[^\n]\ncontact gap %lf",
+                  &m.acnePercent, &m.leakPercent, &m.gapTexels) < 2)
+    m.failure = "ERROR: the lab printed no measurements:\n" + log;
+  return m;
+}
+
+void expectSceneMatchesGolden(const std::string& id, const std::string& name, const std::vector<std::string>& args,
+                              float tolerance, double maxFailingFraction) {
+  const fs::path out = fs::path(variant::kOutputDir) / ("Ex" + id + "_" + name);
+  const fs::path golden = fs::path(variant::kSourceDir) / "tests/golden" / variant::kLab / (name + ".pfm");
+  const fs::path pfm = out / "result.pfm";
+  std::vector<std::string> all = {"--size", "256x256", "--dump-visibility", pfm.string()};
+  all.insert(all.end(), args.begin(), args.end());
+  fs::create_directories(out);
+  fs::remove(pfm);
+  std::string logText;
+  const auto ok = runIsolated(id, out, all, logText);
+  if (!ok) FAIL() << ok.message();
+  const fs::path log = out / "lab.log";
   const FloatImage got = readPfm(pfm);
   if (updatingGolden()) {
     fs::create_directories(golden.parent_path());

@@ -56,6 +56,17 @@ std::vector<glm::vec4> runExercise(const std::string& id, const std::string& bod
     if (r.x <= -1e29f || r.y <= -1e29f || r.z <= -1e29f || r.w <= -1e29f) \
       FAIL() << "NOT IMPLEMENTED: the GLSL function still returns WB_TODO";
 
+/// Acne, leak and contact gap of one headless run (`--metrics`) of exercise `id`, isolated as in
+/// expectSceneMatchesGolden(); `failure` is set ("ERROR: …" or "NOT IMPLEMENTED: …") if it did not run.
+struct SceneMetrics {
+  double acnePercent = -1;  ///< acne rate, in percent
+  double leakPercent = -1;  ///< light leak, in percent
+  double gapTexels = -1;    ///< contact gap in texels (-1 when not measured)
+  std::string failure;      ///< empty when the run worked
+};
+/// Runs the lab at 480x270 with `--metrics` and `args`; see SceneMetrics.
+SceneMetrics measureScene(const std::string& id, const std::string& name, const std::vector<std::string>& args);
+
 /// Layer 2: renders a golden case with the lab itself (`--headless --size 256x256` plus `args`),
 /// with exercise `id` isolated, and compares its visibility with tests/golden/<lab>/<name>.pfm.
 /// A pixel fails when no reference pixel in its 3x3 neighbourhood is within `tolerance`; the test fails when more than
