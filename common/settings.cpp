@@ -106,33 +106,44 @@ void Settings::list(std::ostream& out) const {
 }
 
 bool Settings::ui(const std::string& prefix) const {
+  // One collapsing header per group ("shadow", "bias", ...), in order of first registration; the
+  // rarely used groups start closed.
+  auto groupOf = [](const Setting& s) { return s.name.substr(0, s.name.find('.')); };
+  std::vector<std::string> groups;
+  for (const auto& s : settings_)
+    if (s.name.rfind(prefix, 0) == 0 && std::find(groups.begin(), groups.end(), groupOf(s)) == groups.end())
+      groups.push_back(groupOf(s));
   bool changed = false;
-  for (const auto& s : settings_) {
-    if (s.name.rfind(prefix, 0) != 0) continue;
-    const char* n = s.name.c_str();
-    switch (s.kind) {
-      case Setting::Kind::Float:
-        changed |= ImGui::SliderFloat(n, static_cast<float*>(s.value), s.min, s.max);
-        break;
-      case Setting::Kind::Int:
-        changed |= ImGui::SliderInt(n, static_cast<int*>(s.value), int(s.min), int(s.max));
-        break;
-      case Setting::Kind::Bool:
-        changed |= ImGui::Checkbox(n, static_cast<bool*>(s.value));
-        break;
-      case Setting::Kind::Choice: {
-        int* v = static_cast<int*>(s.value);
-        if (ImGui::BeginCombo(n, s.choices[*v].c_str())) {
-          for (int i = 0; i < int(s.choices.size()); ++i)
-            if (ImGui::Selectable(s.choices[i].c_str(), i == *v)) {
-              *v = i;
-              changed = true;
-            }
-          ImGui::EndCombo();
+  for (const auto& g : groups) {
+    const bool rare = g == "camera" || g == "alpha" || g == "light";
+    if (!ImGui::CollapsingHeader(g.c_str(), rare ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) continue;
+    for (const auto& s : settings_) {
+      if (s.name.rfind(prefix, 0) != 0 || groupOf(s) != g) continue;
+      const char* n = s.name.c_str();
+      switch (s.kind) {
+        case Setting::Kind::Float:
+          changed |= ImGui::SliderFloat(n, static_cast<float*>(s.value), s.min, s.max);
+          break;
+        case Setting::Kind::Int:
+          changed |= ImGui::SliderInt(n, static_cast<int*>(s.value), int(s.min), int(s.max));
+          break;
+        case Setting::Kind::Bool:
+          changed |= ImGui::Checkbox(n, static_cast<bool*>(s.value));
+          break;
+        case Setting::Kind::Choice: {
+          int* v = static_cast<int*>(s.value);
+          if (ImGui::BeginCombo(n, s.choices[*v].c_str())) {
+            for (int i = 0; i < int(s.choices.size()); ++i)
+              if (ImGui::Selectable(s.choices[i].c_str(), i == *v)) {
+                *v = i;
+                changed = true;
+              }
+            ImGui::EndCombo();
+          }
         }
       }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", s.help.c_str());
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", s.help.c_str());
   }
   return changed;
 }
