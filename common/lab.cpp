@@ -222,6 +222,24 @@ glm::vec3 Lab::viewPosition() const {
   return camera.eye();
 }
 
+void Lab::renderShadowMap(const Program& depthProgram, const ShadowMap& map, const Light& light,
+                          const glm::mat4& lightViewProj) {
+  map.begin();
+  depthProgram.set("u_lightViewProj", lightViewProj);
+  depthProgram.set("u_alphaCutoff", alphaCutoff_);
+  gpuScene->draw(depthProgram);
+  showLight({light, lightViewProj, map.texture(), map.size()});
+}
+
+void Lab::beginCameraPass(const Program& program, const glm::mat4& lightViewProj, GLuint shadowMap) {
+  bindFrameTarget();
+  program.set("u_viewProj", viewProj());
+  program.set("u_lightViewProj", lightViewProj);
+  program.set("u_alphaCutoff", alphaCutoff_);
+  program.set("u_shadowMap", 0);
+  glBindTextureUnit(0, shadowMap);
+}
+
 void Lab::bindFrameTarget() const {
   glBindFramebuffer(GL_FRAMEBUFFER, impl_->fbo.id());
   glViewport(0, 0, frameSize_.x, frameSize_.y);

@@ -9,6 +9,7 @@
 #include "common/scene.hpp"
 #include "common/settings.hpp"
 #include "common/shader.hpp"
+#include "common/shadow_map.hpp"
 
 #include <glm/glm.hpp>
 
@@ -84,6 +85,13 @@ class Lab {
   /// Records an exercise's state (shown in the info panel and printed by headless runs).
   void setStatus(const std::string& id, ExerciseState state, const std::string& message);
 
+  /// PASS 1 of most labs: draws the scene's depth into `map` as seen through `lightViewProj` with
+  /// `depthProgram` (setting u_lightViewProj and u_alphaCutoff), and shows `light` in the debug views.
+  void renderShadowMap(const Program& depthProgram, const ShadowMap& map, const Light& light,
+                       const glm::mat4& lightViewProj);
+  /// PASS 2 of most labs: binds the frame target and sets what every camera pass reads: u_viewProj,
+  /// u_lightViewProj, u_alphaCutoff, and `shadowMap` on texture unit 0 as u_shadowMap.
+  void beginCameraPass(const Program& program, const glm::mat4& lightViewProj, GLuint shadowMap);
   /// Binds the offscreen frame target (color + visibility + depth) and sets the viewport.
   void bindFrameTarget() const;
   /// The frame target's size in pixels.

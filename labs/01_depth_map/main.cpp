@@ -6,7 +6,6 @@
 // Two passes: the light renders the scene's depth into a texture (the shadow map); the camera then
 // renders the scene and asks, per pixel, whether the light saw something nearer than this point.
 #include "common/lab.hpp"
-#include "common/shadow_map.hpp"
 #include "exercise.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -52,31 +51,22 @@ class DepthMapLab : public wb::Lab {
     shadowMap.resize(shadowMapSize());
 
     // PASS 1: depth from the light. No colour target; only the depth buffer is kept.
+    // Every face is drawn (no culling): the leaves are open quads, and any face may cast a shadow.
     if (ready) {
       auto timer = timePass("shadow");
-      shadowMap.begin();
-      glDisable(GL_CULL_FACE);  // the leaves are open quads; every face may cast a shadow
-      depthProgram->set("u_lightViewProj", lightViewProj);
-      depthProgram->set("u_alphaCutoff", alphaCutoff());
-      gpuScene->draw(*depthProgram);
-      showLight({light, lightViewProj, shadowMap.texture(), shadowMap.size()});
+      renderShadowMap(*depthProgram, shadowMap, light, lightViewProj);
     }
 
     // PASS 2: the camera's view, with the shadow test per pixel.
     auto timer = timePass("lighting");
-    bindFrameTarget();
     const wb::Program& p = *sceneProgram;
-    p.set("u_viewProj", viewProj());
-    p.set("u_lightViewProj", lightViewProj);
+    beginCameraPass(p, lightViewProj, shadowMap.texture());
     p.set("u_shadowsReady", ready ? 1 : 0);
     p.set("u_bias", depthBias());
-    p.set("u_alphaCutoff", alphaCutoff());
     p.set("u_lightType", spot ? 1 : 0);
     p.set("u_lightPos", light.position);
     p.set("u_lightDir", light.direction);
     p.set("u_spotCos", std::cos(glm::radians(light.angle)));
-    p.set("u_shadowMap", 0);
-    glBindTextureUnit(0, shadowMap.texture());
     gpuScene->draw(p);
   }
 

@@ -8,7 +8,6 @@
 // and measures both sides of the trade: acne (lit surfaces drawn shadowed) and the contact gap
 // (shadows detached from their casters, "peter-panning").
 #include "common/lab.hpp"
-#include "common/shadow_map.hpp"
 #include "exercise.hpp"
 
 #include <cmath>
@@ -63,24 +62,18 @@ class BiasLab : public wb::Lab {
     bool ready = true;
     {
       auto timer = timePass("shadow");
-      shadowMap.begin();
       if (method == PolygonOffset)
         ready = attempt("02.3", [&] { lab02::applyRasterizerBias(offsetFactor, offsetUnits); });
       if (method == FrontFaces) ready = attempt("02.4", [&] { lab02::cullForDepthPass(true); });
-      depthProgram->set("u_lightViewProj", lightViewProj);
-      depthProgram->set("u_alphaCutoff", alphaCutoff());
-      gpuScene->draw(*depthProgram);
+      renderShadowMap(*depthProgram, shadowMap, light, lightViewProj);
       glDisable(GL_POLYGON_OFFSET_FILL);  // back to the state every other pass expects
       glDisable(GL_CULL_FACE);
     }
-    showLight({light, lightViewProj, shadowMap.texture(), shadowMap.size()});
 
     // PASS 2: the camera's view; the shader applies the comparison-side remedies (02.1, 02.2, 02.5, 02.6).
     auto timer = timePass("lighting");
-    bindFrameTarget();
     const wb::Program& p = *sceneProgram;
-    p.set("u_viewProj", viewProj());
-    p.set("u_lightViewProj", lightViewProj);
+    beginCameraPass(p, lightViewProj, shadowMap.texture());
     p.set("u_lightDir", light.direction);
     p.set("u_method", method);
     p.set("u_ready", ready ? 1 : 0);
@@ -90,9 +83,6 @@ class BiasLab : public wb::Lab {
     p.set("u_normalOffset", normalOffset);
     p.set("u_texelWorld", wb::texelWorldSize(lightViewProj, shadowMap.size()));
     p.set("u_radius", kernel);
-    p.set("u_alphaCutoff", alphaCutoff());
-    p.set("u_shadowMap", 0);
-    glBindTextureUnit(0, shadowMap.texture());
     gpuScene->draw(p);
   }
 
