@@ -11,4 +11,4 @@ shot "$solution" view_from_light --set debug.view=light --set debug.shadow_map=t
 shot "$solution" tree_alpha_tested --set camera.bookmark=1
 shot "$solution" tree_solid_quads --set camera.bookmark=1 --set alpha.cutoff=0
 shot "$solution" no_bias --set shadow.bias=0 --set camera.bookmark=2
-shot "$student" stubs 2>/dev/null
+shot "$student" lab01_stubs 2>/dev/null

@@ -15,7 +15,7 @@ shot receiver_plane --scene "$scenes/bias_resting.json" --set bias.method=receiv
 shot thin_walls_front_faces --scene "$scenes/bias_thin_walls.json" --set bias.method=front_faces
 "$solution" --headless --size 640x360 --scene "$scenes/bias_resting.json" --set bias.method=constant --set shadow.bias=0.04 \
   --heatmap "$out/heatmap_peter_panning.png" >/dev/null && echo "wrote $out/heatmap_peter_panning.png"
-"$student" --headless --size 640x360 --screenshot "$out/stubs.png" >/dev/null 2>&1 && echo "wrote $out/stubs.png"
+"$student" --headless --size 640x360 --screenshot "$out/lab02_stubs.png" >/dev/null 2>&1 && echo "wrote $out/lab02_stubs.png"
 
 # The trade-off of a constant bias: acne on the grazing scene, contact gap on the resting one.
 table constant_bias_grazing --sweep bias.method=constant --sweep shadow.bias=0,0.00125,0.0025,0.005,0.01,0.02,0.04
