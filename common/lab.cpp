@@ -11,6 +11,7 @@
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <glm/gtc/matrix_transform.hpp>
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
@@ -210,7 +211,11 @@ int Lab::shadowMapSize() {
 }
 
 glm::mat4 Lab::viewProj() const {
-  if (debugView_ == 1 && light_.depthMap) return light_.viewProj;
+  if (debugView_ == 1 && light_.depthMap) {  // the light's square view, letterboxed, not stretched
+    const float aspect = float(frameSize_.x) / float(frameSize_.y);
+    const glm::vec3 fit = aspect > 1 ? glm::vec3(1 / aspect, 1, 1) : glm::vec3(1, aspect, 1);
+    return glm::scale(glm::mat4(1), fit) * light_.viewProj;
+  }
   return camera.projection(float(frameSize_.x) / float(frameSize_.y)) * camera.view();
 }
 
