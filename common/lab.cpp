@@ -41,7 +41,8 @@ const char* const kUsage =
     "  --bench F.csv         time every pass (GPU ms) and the frame (wall ms) over the frames\n"
     "  --metrics             compare with exact (ray-cast) visibility: acne rate and light leak\n"
     "  --heatmap F.png       with --metrics: write acne (red) and leaks (blue) as a picture\n"
-    "  --sweep key=a,b,...   render and measure every combination of the listed settings (repeatable)\n"
+    "  --sweep key=a,b,...   time every combination of the listed settings (repeatable; with\n"
+    "                        --metrics also measure it; --frames N timed frames each)\n"
     "  --sweep-csv F.csv     with --sweep: also write the table as CSV\n";
 
 const int kMapSizes[] = {512, 1024, 2048, 4096, 8192};
@@ -650,10 +651,10 @@ void Lab::drawShell() {
 }
 
 int Lab::sweep() {
+  // Each combination: one warm-up frame, then --frames timed frames (GPU ms per pass and wall ms per
+  // frame are their means); with --metrics, the last frame is also measured against exact visibility.
   auto& i = *impl_;
-  std::vector<std::string> header;
-  for (const auto& sw : i.sweeps) header.push_back(sw.first);
-  for (const char* c : {"acne_%", "leak_%", "contact_gap_texels", "gpu_ms"}) header.emplace_back(c);
+  const int timed = std::max(1, i.opt.frames);
   std::ofstream csv;
   if (!i.sweepCsv.empty()) {
     csv.open(i.sweepCsv);
@@ -666,12 +667,14 @@ int Lab::sweep() {
     for (size_t c = 0; c < cells.size(); ++c) csv << (c ? "," : "") << cells[c];
     if (csv.is_open()) csv << "\n";
   };
-  row(header);
-  std::string rule = "|";
-  for (size_t c = 0; c < header.size(); ++c) rule += "---|";
-  std::printf("%s\n", rule.c_str());
+  auto fmt = [](const char* f, double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, f, v);
+    return std::string(b);
+  };
   size_t total = 1;
   for (const auto& sw : i.sweeps) total *= sw.second.size();
+  std::vector<std::string> passNames;
   for (size_t n = 0; n < total; ++n) {
     std::vector<std::string> cells;
     size_t k = n;
@@ -680,19 +683,41 @@ int Lab::sweep() {
       cells.insert(cells.begin(), it->second[k % it->second.size()]);
       k /= it->second.size();
     }
-    std::fprintf(stderr, "\rsweep %zu/%zu", n + 1, total);
-    for (int f = 0; f < std::max(1, i.opt.frames); ++f) frame(1.0f / 60);
+    std::fprintf(stderr, "\rsweep %zu/%zu ", n + 1, total);
+    frame(1.0f / 60);  // warm-up: allocations, first use of a program
     glFinish();
     i.collect(true, false);
-    measure(false);
-    double gpu = 0;
-    for (const auto& [name, s] : i.passes) gpu += s.last;
-    char buf[4][32];
-    std::snprintf(buf[0], 32, "%.2f", 100 * i.lastMetrics.acneRate());
-    std::snprintf(buf[1], 32, "%.2f", 100 * i.lastMetrics.leakRate());
-    std::snprintf(buf[2], 32, i.lastGap < 0 ? "n/a" : "%.1f", i.lastGap);
-    std::snprintf(buf[3], 32, "%.2f", gpu);
-    for (auto& b : buf) cells.emplace_back(b);
+    for (auto& [name, st] : i.passes) st = PassStats{};
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int f = 0; f < timed; ++f) {
+      frame(1.0f / 60);
+      glFinish();
+      i.collect(true, true);
+    }
+    const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / timed;
+    if (n == 0) {  // the header, once the passes are known
+      for (const auto& p : i.passes) passNames.push_back(p.first);
+      std::vector<std::string> header;
+      for (const auto& sw : i.sweeps) header.push_back(sw.first);
+      if (i.opt.metrics) header.insert(header.end(), {"acne_%", "leak_%", "contact_gap_texels"});
+      for (const auto& p : passNames) header.push_back(p + "_gpu_ms");
+      header.emplace_back("frame_ms");
+      row(header);
+      std::string rule = "|";
+      for (size_t c = 0; c < header.size(); ++c) rule += "---|";
+      std::printf("%s\n", rule.c_str());
+    }
+    if (i.opt.metrics) {
+      measure(false);
+      cells.push_back(fmt("%.2f", 100 * i.lastMetrics.acneRate()));
+      cells.push_back(fmt("%.2f", 100 * i.lastMetrics.leakRate()));
+      cells.push_back(i.lastGap < 0 ? "n/a" : fmt("%.1f", i.lastGap));
+    }
+    for (const auto& p : passNames) {
+      const PassStats& st = i.stats(p);
+      cells.push_back(st.count ? fmt("%.3f", st.sum / st.count) : "-");
+    }
+    cells.push_back(fmt("%.2f", wall));
     row(cells);
   }
   std::fprintf(stderr, "\r%*s\r", 24, "");

@@ -6,7 +6,7 @@ solution=$1 student=$2 out=$3
 scenes=$(cd "$(dirname "$0")/../../scenes" && pwd)
 mkdir -p "$out"
 shot() { local name=$1; shift; "$solution" --headless --size 640x360 --screenshot "$out/$name.png" "$@" >/dev/null; echo "wrote $out/$name.png"; }
-table() { local name=$1; shift; "$solution" --headless --size 480x270 "$@" --sweep-csv "$out/$name.csv" 2>/dev/null | grep '^|' > "$out/$name.md"; echo "wrote $out/$name.md"; }
+table() { local name=$1; shift; "$solution" --headless --size 480x270 --metrics "$@" --sweep-csv "$out/$name.csv" 2>/dev/null | grep '^|' > "$out/$name.md"; echo "wrote $out/$name.md"; }
 
 shot acne_none --set bias.method=none
 shot acne_constant --set bias.method=constant
