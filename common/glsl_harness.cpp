@@ -54,7 +54,8 @@ std::vector<glm::vec4> runGlslKernel(const std::string& functions, const fs::pat
       << "layout(local_size_x = 64) in;\n"
       << "layout(std430, binding = 0) readonly buffer WbIn { vec4 wb_in[]; };\n"
       << "layout(std430, binding = 1) writeonly buffer WbOut { vec4 wb_out[]; };\n"
-      << "uniform int wb_count;\n";
+      << "uniform int wb_count;\n"
+      << "layout(binding = 7) uniform sampler2DShadow wb_shadow0;  // a depth-compare sampler, if bound\n";
   for (size_t t = 0; t < textures.size(); ++t) src << "uniform sampler2D wb_tex" << t << ";\n";
   // The functions keep their own source numbers (0 = origin, then its includes) so errors name the
   // student's file and line; the harness's main() gets the next number.

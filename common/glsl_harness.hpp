@@ -27,7 +27,8 @@ std::string isolatedExerciseSource(const std::string& file, const std::string& i
 /// Runs `body` once per invocation `wb_i` in [0, count) in a compute shader that first includes
 /// `functions` (read as if it were the file `origin`). The body reads its inputs with IN(k) =
 /// inputs[wb_i * stride + k] and writes `vec4 result`. Textures are bound to units 0.. as the
-/// uniforms wb_tex0, wb_tex1, ... Throws wb::Error with file:line on a compile error.
+/// uniforms wb_tex0, wb_tex1, ...; a depth texture with a compare sampler bound to unit 7 is
+/// `wb_shadow0`. Throws wb::Error with file:line on a compile error.
 std::vector<glm::vec4> runGlslKernel(const std::string& functions, const std::filesystem::path& origin,
                                      const std::string& body, int count, int stride,
                                      const std::vector<glm::vec4>& inputs, const std::vector<GLuint>& textures = {});

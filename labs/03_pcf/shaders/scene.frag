@@ -1,0 +1,50 @@
+#version 450 core
+// PASS 2 of lab 03: the shadow test, filtered by the chosen PCF kernel.
+#include "exercise.glsl"
+#include "wb/lighting.glsl"
+#include "wb/outputs.glsl"
+in vec3 v_world;
+in vec3 v_normal;
+in vec2 v_uv;
+uniform vec3 u_color;
+uniform sampler2D u_albedo;
+uniform int u_hasTexture;
+uniform float u_alphaCutoff;
+uniform sampler2D u_shadowMap;              // explicit taps read raw depths
+layout(binding = 1) uniform sampler2DShadow u_shadowCompare;  // the same map, compared by the hardware
+uniform mat4 u_lightViewProj;
+uniform vec3 u_lightDir;
+uniform float u_bias;
+uniform int u_radius;   // pcf.kernel: width 2r + 1
+uniform float u_spacing, u_sigma, u_poissonRadius;
+uniform int u_poissonCount;
+
+void main() {
+  vec4 texel = u_hasTexture != 0 ? texture(u_albedo, v_uv) : vec4(1.0);
+  if (texel.a < u_alphaCutoff) discard;
+  vec3 albedo = u_color * texel.rgb;
+  vec3 n = normalize(v_normal);
+  if (!gl_FrontFacing) n = -n;
+  vec3 toLight = -u_lightDir;
+
+  vec4 clip = u_lightViewProj * vec4(v_world, 1.0);
+  vec3 coord = clip.xyz / clip.w * 0.5 + 0.5;
+  // One program per filter (the lab injects PCF_METHOD), so no pixel pays for the branches it skips.
+#if PCF_METHOD == 1
+  float visibility = pcfHardware(u_shadowCompare, coord, u_bias);
+#elif PCF_METHOD == 2
+  float visibility = pcfGaussian(u_shadowMap, coord, u_radius, u_spacing, u_sigma, u_bias);
+#elif PCF_METHOD == 3
+  float visibility = pcfPoisson(u_shadowMap, coord, u_poissonCount, u_poissonRadius, uvec2(gl_FragCoord.xy), u_bias);
+#elif PCF_METHOD == 4
+  float visibility = pcfGather(u_shadowMap, coord, u_radius, u_bias);
+#else
+  float visibility = pcfGrid(u_shadowMap, coord, u_radius, u_spacing, u_bias);
+#endif
+  if (wbIsTodo(visibility)) {  // the chosen filter is a stub: show it, never fake a shadow
+    wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
+    return;
+  }
+  bool facesLight = dot(n, toLight) > 0.0;
+  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(1.0), visibility), visibility, v_world, facesLight);
+}
