@@ -43,7 +43,8 @@ const char* const kUsage =
     "  --heatmap F.png       with --metrics: write acne (red) and leaks (blue) as a picture\n"
     "  --sweep key=a,b,...   time every combination of the listed settings (repeatable; with\n"
     "                        --metrics also measure it; --frames N timed frames each)\n"
-    "  --sweep-csv F.csv     with --sweep: also write the table as CSV\n";
+    "  --sweep-csv F.csv     with --sweep: also write the table as CSV\n"
+    "  --compare key=a,b     split screen: the left half with key=a, the right half with key=b\n";
 
 const int kMapSizes[] = {512, 1024, 2048, 4096, 8192};
 
@@ -89,7 +90,12 @@ struct Lab::Impl {
   std::string measured;
   Texture heatmap;
   bool showHeatmap = false;
-  VisibilityMetrics lastMetrics;
+  // Split-screen comparison: one setting, value A on the left and B on the right.
+  bool compareOn = false;
+  std::string compareKey, compareA, compareB;
+  Texture saved[3];
+  glm::ivec2 savedSize{0};
+  VisibilityMetrics lastMetrics, leftMetrics, rightMetrics;
   double lastGap = -1;
   // --sweep key=v1,v2,...: every combination is rendered and measured; --sweep-csv saves the table.
   std::vector<std::pair<std::string, std::vector<std::string>>> sweeps;
@@ -326,6 +332,13 @@ int Lab::main(int argc, char** argv) {
         std::stringstream list(v.substr(eq + 1));
         for (std::string item; std::getline(list, item, ',');) values.push_back(item);
         i.sweeps.emplace_back(v.substr(0, eq), values);
+      } else if (arg == "--compare") {
+        const std::string v = value();
+        const auto eq = v.find('='), comma = v.find(',', eq == std::string::npos ? 0 : eq);
+        if (eq == std::string::npos || comma == std::string::npos || v.find(',', comma + 1) != std::string::npos)
+          throw UsageError("--compare expects key=a,b (two values of one setting), got '" + v + "'");
+        i.compareKey = v.substr(0, eq), i.compareA = v.substr(eq + 1, comma - eq - 1), i.compareB = v.substr(comma + 1);
+        i.compareOn = true;
       } else if (arg == "--sweep-csv")
         i.sweepCsv = value();
       else if (arg == "--heatmap")
@@ -350,9 +363,14 @@ int Lab::main(int argc, char** argv) {
         throw UsageError(
             "unknown option '" + arg +
             "'; accepted: --headless --scene --size --set --frames "
-            "--screenshot --dump-visibility --bench --metrics --heatmap --sweep --sweep-csv --list-settings --help");
+            "--screenshot --dump-visibility --bench --metrics --heatmap --sweep --sweep-csv --compare --list-settings --help");
     }
     for (const auto& s : sets) settings.assign(s);
+    if (i.compareOn) {  // both values must be valid before anything renders
+      const std::string keep = settings.value(i.compareKey);
+      for (const auto& v : {i.compareA, i.compareB}) settings.assign(i.compareKey + "=" + v);
+      settings.assign(i.compareKey + "=" + keep);
+    }
     for (const auto& [key, values] : i.sweeps)  // check every swept value now, before any rendering
       for (const auto& v : values) settings.assign(key + "=" + v);
     for (const auto& s : sets) settings.assign(s);
@@ -494,20 +512,37 @@ void Lab::frame(float dt) {
     i.depth = makeTexture2D(GL_DEPTH_COMPONENT24, frameSize_.x, frameSize_.y);
     i.fbo = makeFramebuffer({i.color.id(), i.visibility.id(), i.position.id()}, i.depth.id());
   }
-  bindFrameTarget();
-  const float sky[4] = {0.55f, 0.65f, 0.78f, 1}, lit = 1, none[4] = {0, 0, 0, 0};
-  glClearBufferfv(GL_COLOR, 0, sky);
-  glClearBufferfv(GL_COLOR, 1, &lit);
-  glClearBufferfv(GL_COLOR, 2, none);
-  glClear(GL_DEPTH_BUFFER_BIT);
-  glEnable(GL_DEPTH_TEST);
-
+  // The scene: once, or in split-screen comparison twice (left half with value A, right with B).
   bool programsOk = std::all_of(programs_.begin(), programs_.end(), [](const Program& p) { return p.ok(); });
-  if (programsOk) {
-    render();
-  } else if (i.ctx->headless()) {
+  if (!programsOk && i.ctx->headless())
     for (const auto& p : programs_)
       if (!p.ok()) throw Error(p.error());
+  const bool split = i.compareOn && !i.compareKey.empty();
+  const std::string before = split ? settings.value(i.compareKey) : "";
+  if (split) settings.assign(i.compareKey + "=" + i.compareA);
+  drawScene(programsOk);
+  if (split) {
+    const int half = frameSize_.x / 2;
+    if (!i.saved[0].id() || i.savedSize != frameSize_) {  // copies of the left half's attachments
+      i.saved[0] = makeTexture2D(GL_RGBA8, half, frameSize_.y);
+      i.saved[1] = makeTexture2D(GL_R32F, half, frameSize_.y);
+      i.saved[2] = makeTexture2D(GL_RGBA32F, half, frameSize_.y);
+      i.savedSize = frameSize_;
+    }
+    const GLuint targets[3] = {i.color.id(), i.visibility.id(), i.position.id()};
+    for (int t = 0; t < 3; ++t)
+      glCopyImageSubData(targets[t], GL_TEXTURE_2D, 0, 0, 0, 0, i.saved[t].id(), GL_TEXTURE_2D, 0, 0, 0, 0, half, frameSize_.y, 1);
+    settings.assign(i.compareKey + "=" + i.compareB);
+    drawScene(programsOk);
+    for (int t = 0; t < 3; ++t)
+      glCopyImageSubData(i.saved[t].id(), GL_TEXTURE_2D, 0, 0, 0, 0, targets[t], GL_TEXTURE_2D, 0, 0, 0, 0, half, frameSize_.y, 1);
+    settings.assign(i.compareKey + "=" + before);
+    bindFrameTarget();  // a white divider between the halves
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(half - 1, 0, 2, frameSize_.y);
+    const float white[4] = {1, 1, 1, 1};
+    glClearBufferfv(GL_COLOR, 0, white);
+    glDisable(GL_SCISSOR_TEST);
   }
 
   // Shared debug views, drawn into the frame target so screenshots and headless runs show them.
@@ -572,6 +607,17 @@ void Lab::frame(float dt) {
     }
     i.ctx->endFrame();
   }
+}
+
+void Lab::drawScene(bool programsOk) {
+  bindFrameTarget();
+  const float sky[4] = {0.55f, 0.65f, 0.78f, 1}, lit = 1, none[4] = {0, 0, 0, 0};
+  glClearBufferfv(GL_COLOR, 0, sky);
+  glClearBufferfv(GL_COLOR, 1, &lit);
+  glClearBufferfv(GL_COLOR, 2, none);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  if (programsOk) render();
 }
 
 void Lab::drawShell() {
@@ -643,6 +689,33 @@ void Lab::drawShell() {
   ImGui::PushItemWidth(150);
   const int oldBookmark = bookmark_;
   settings.ui();
+  if (ImGui::CollapsingHeader("compare (split screen)")) {
+    // Any setting with named choices can be compared: value A on the left, B on the right.
+    std::vector<const Setting*> choices;
+    for (const auto& s : settings.all())
+      if (s.kind == Setting::Kind::Choice) choices.push_back(&s);
+    ImGui::Checkbox("split screen", &i.compareOn);
+    if (i.compareKey.empty() && !choices.empty()) {
+      i.compareKey = choices.back()->name;
+      i.compareA = choices.back()->choices.front(), i.compareB = choices.back()->choices.back();
+    }
+    auto combo = [](const char* label, std::string& current, const std::vector<std::string>& options) {
+      if (!ImGui::BeginCombo(label, current.c_str())) return;
+      for (const auto& o : options)
+        if (ImGui::Selectable(o.c_str(), o == current)) current = o;
+      ImGui::EndCombo();
+    };
+    std::vector<std::string> names;
+    for (const auto* c : choices) names.push_back(c->name);
+    const std::string oldKey = i.compareKey;
+    combo("setting", i.compareKey, names);
+    for (const auto* c : choices)
+      if (c->name == i.compareKey) {
+        if (i.compareKey != oldKey) i.compareA = c->choices.front(), i.compareB = c->choices.back();
+        combo("left (A)", i.compareA, c->choices);
+        combo("right (B)", i.compareB, c->choices);
+      }
+  }
   if (bookmark_ != oldBookmark && bookmark_ < int(scene.cameras.size())) camera.pose = scene.cameras[bookmark_];
   lightIndex = std::min(lightIndex, int(scene.lights.size()) - 1);
   ui();
@@ -745,6 +818,23 @@ void Lab::measure(bool report) {
   if (light_.depthMap && light.type == LightType::Directional && light_.mapSize > 0)
     gap = contactGapTexels(rendered, exact, positions, *i.rays, light, scene.boundsMin.y,
                            texelWorldSize(light_.viewProj, light_.mapSize));
+  std::string halves;  // in split screen, each half measured on its own
+  if (i.compareOn && !i.compareKey.empty()) {
+    for (int side = 0; side < 2; ++side) {
+      FloatImage r{w / 2, h, {}}, e{w / 2, h, {}};
+      std::vector<glm::vec4> pos;
+      for (int y = 0; y < h; ++y)
+        for (int x = side * (w - w / 2); x < side * (w - w / 2) + w / 2; ++x) {
+          const size_t k = size_t(y) * size_t(w) + size_t(x);
+          r.pixels.push_back(rendered.pixels[k]), e.pixels.push_back(exact.pixels[k]), pos.push_back(positions[k]);
+        }
+      const VisibilityMetrics hm = compareVisibility(r, e, pos);
+      char line[160];
+      std::snprintf(line, sizeof line, "\n%s %s=%s: acne %.2f%%, leak %.2f%%", side ? "right" : "left ",
+                    i.compareKey.c_str(), (side ? i.compareB : i.compareA).c_str(), 100 * hm.acneRate(), 100 * hm.leakRate());
+      halves += line;
+    }
+  }
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   char text[320];
   std::snprintf(
@@ -753,7 +843,7 @@ void Lab::measure(bool report) {
       "drawn lit)\ncontact gap %s texels\n(exact visibility by ray casting, %.0f ms)",
       100 * m.acneRate(), m.acnePixels, m.litPixels, 100 * m.leakRate(), m.leakPixels, m.shadowedPixels,
       gap < 0 ? "n/a" : std::to_string(gap).substr(0, std::to_string(gap).find('.') + 2).c_str(), ms);
-  i.measured = text;
+  i.measured = text + halves;
   i.lastMetrics = m;
   i.lastGap = gap;
   if (!report) return;
@@ -763,7 +853,7 @@ void Lab::measure(bool report) {
     glTextureSubImage2D(i.heatmap.id(), 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, heat.data());
     i.showHeatmap = true;
   }
-  std::printf("%s\n", text);
+  std::printf("%s\n", i.measured.c_str());
   if (!i.opt.heatmap.empty()) {
     writePng(i.opt.heatmap, w, h, heat);
     std::printf("wrote %s\n", fs::absolute(i.opt.heatmap).string().c_str());

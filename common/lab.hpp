@@ -139,6 +139,7 @@ class Lab {
   std::unique_ptr<Impl> impl_;
   void frame(float dt);
   void drawShell();
+  void drawScene(bool programsOk);
   void probeGlslExercises();
   void writeOutputs();
   void measure(bool report = true);

@@ -100,6 +100,8 @@ void Settings::assign(const std::string& a) {
   }
 }
 
+std::string Settings::value(const std::string& name) const { return valueString(find(name)); }
+
 void Settings::list(std::ostream& out) const {
   for (const auto& s : settings_)
     out << "  " << s.name << " = " << valueString(s) << "    (" << accepted(s) << ")\n      " << s.help << "\n";

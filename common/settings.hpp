@@ -35,6 +35,8 @@ class Settings {
 
   /// Applies "key=value"; throws wb::UsageError saying what is accepted.
   void assign(const std::string& assignment);
+  /// The current value of a setting as text (what assign() accepts); throws wb::UsageError if unknown.
+  std::string value(const std::string& name) const;
   /// Prints every setting with its current value, range and help.
   void list(std::ostream& out) const;
   /// Draws an ImGui widget per setting whose name starts with `prefix`; returns true if any changed.
