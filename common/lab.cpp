@@ -11,8 +11,8 @@
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
-#include <glm/gtc/matrix_transform.hpp>
 #include <imgui.h>
+#include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -360,10 +360,10 @@ int Lab::main(int argc, char** argv) {
           throw UsageError("bad --frames '" + v + "': expected a whole number of at least 1");
         }
       } else
-        throw UsageError(
-            "unknown option '" + arg +
-            "'; accepted: --headless --scene --size --set --frames "
-            "--screenshot --dump-visibility --bench --metrics --heatmap --sweep --sweep-csv --compare --list-settings --help");
+        throw UsageError("unknown option '" + arg +
+                         "'; accepted: --headless --scene --size --set --frames "
+                         "--screenshot --dump-visibility --bench --metrics --heatmap --sweep --sweep-csv --compare "
+                         "--list-settings --help");
     }
     for (const auto& s : sets) settings.assign(s);
     if (i.compareOn) {  // both values must be valid before anything renders
@@ -531,11 +531,13 @@ void Lab::frame(float dt) {
     }
     const GLuint targets[3] = {i.color.id(), i.visibility.id(), i.position.id()};
     for (int t = 0; t < 3; ++t)
-      glCopyImageSubData(targets[t], GL_TEXTURE_2D, 0, 0, 0, 0, i.saved[t].id(), GL_TEXTURE_2D, 0, 0, 0, 0, half, frameSize_.y, 1);
+      glCopyImageSubData(targets[t], GL_TEXTURE_2D, 0, 0, 0, 0, i.saved[t].id(), GL_TEXTURE_2D, 0, 0, 0, 0, half,
+                         frameSize_.y, 1);
     settings.assign(i.compareKey + "=" + i.compareB);
     drawScene(programsOk);
     for (int t = 0; t < 3; ++t)
-      glCopyImageSubData(i.saved[t].id(), GL_TEXTURE_2D, 0, 0, 0, 0, targets[t], GL_TEXTURE_2D, 0, 0, 0, 0, half, frameSize_.y, 1);
+      glCopyImageSubData(i.saved[t].id(), GL_TEXTURE_2D, 0, 0, 0, 0, targets[t], GL_TEXTURE_2D, 0, 0, 0, 0, half,
+                         frameSize_.y, 1);
     settings.assign(i.compareKey + "=" + before);
     bindFrameTarget();  // a white divider between the halves
     glEnable(GL_SCISSOR_TEST);
@@ -767,7 +769,8 @@ int Lab::sweep() {
       glFinish();
       i.collect(true, true);
     }
-    const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / timed;
+    const double wall =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / timed;
     if (n == 0) {  // the header, once the passes are known
       for (const auto& p : i.passes) passNames.push_back(p.first);
       std::vector<std::string> header;
@@ -831,7 +834,8 @@ void Lab::measure(bool report) {
       const VisibilityMetrics hm = compareVisibility(r, e, pos);
       char line[160];
       std::snprintf(line, sizeof line, "\n%s %s=%s: acne %.2f%%, leak %.2f%%", side ? "right" : "left ",
-                    i.compareKey.c_str(), (side ? i.compareB : i.compareA).c_str(), 100 * hm.acneRate(), 100 * hm.leakRate());
+                    i.compareKey.c_str(), (side ? i.compareB : i.compareA).c_str(), 100 * hm.acneRate(),
+                    100 * hm.leakRate());
       halves += line;
     }
   }

@@ -13,7 +13,7 @@
 namespace {
 
 class PcfLab : public wb::Lab {
-public:
+ public:
   PcfLab() : Lab("scenes/depth_map.json") {
     settings.addChoice("pcf.method", method, {"grid", "hardware", "gaussian", "poisson", "gather"},
                        "which filter: N x N grid, hardware 2x2, Gaussian grid, rotated Poisson disk, textureGather");
@@ -25,7 +25,7 @@ public:
     settings.assign("shadow.bias=0.006");  // wider kernels reach further across sloped receivers
   }
 
-protected:
+ protected:
   void init() override {
     depthProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/depth.vert"}, {GL_FRAGMENT_SHADER, "wb/depth.frag"}});
     for (int m = 0; m < kMethods; ++m)  // one variant per filter: PCF_METHOD is the pcf.method index
@@ -33,7 +33,8 @@ protected:
                                       "#define PCF_METHOD " + std::to_string(m) + "\n");
     glslExercise("03.1", "exercise.glsl", "pcfGrid(wb_tex0, vec3(0.5), 1, 1.0, 0.0)");
     glslExercise("03.2", "exercise.glsl", "pcfHardware(wb_shadow0, vec3(0.5), 0.0)");
-    glslExercise("03.3", "exercise.glsl", "gaussianWeight(vec2(1.0), 1.0) + pcfGaussian(wb_tex0, vec3(0.5), 1, 1.0, 1.0, 0.0)");
+    glslExercise("03.3", "exercise.glsl",
+                 "gaussianWeight(vec2(1.0), 1.0) + pcfGaussian(wb_tex0, vec3(0.5), 1, 1.0, 1.0, 0.0)");
     glslExercise("03.4", "exercise.glsl", "pcfPoisson(wb_tex0, vec3(0.5), 16, 1.0, uvec2(0u), 0.0)");
     glslExercise("03.5", "exercise.glsl", "pcfGather(wb_tex0, vec3(0.5), 1, 0.0)");
     // The hardware filter reads the same depth texture through a sampler that compares.
@@ -78,18 +79,18 @@ protected:
     glBindSampler(1, 0);
   }
 
-private:
+ private:
   wb::Program* depthProgram = nullptr;  // PASS 1
   static constexpr int kMethods = 5;
   wb::Program* scenePrograms[kMethods] = {};  // PASS 2, one per pcf.method
   wb::ShadowMap shadowMap;
-  GLuint compareSampler = 0;  // lives as long as the context (the lab)
-  int method = 4;             // pcf.method: gather, the fastest (see the handout's cost tables)
-  int kernel = 1;             // radius index: width 1, 3, 5, 7
-  float spacing = 1.0f;       // texels between grid taps
-  float sigma = 1.0f;         // Gaussian standard deviation, texels
-  int poissonCount = 1;       // 16 << index taps
-  float poissonRadius = 2.5f; // texels
+  GLuint compareSampler = 0;   // lives as long as the context (the lab)
+  int method = 4;              // pcf.method: gather, the fastest (see the handout's cost tables)
+  int kernel = 1;              // radius index: width 1, 3, 5, 7
+  float spacing = 1.0f;        // texels between grid taps
+  float sigma = 1.0f;          // Gaussian standard deviation, texels
+  int poissonCount = 1;        // 16 << index taps
+  float poissonRadius = 2.5f;  // texels
 };
 
 }  // namespace

@@ -107,7 +107,8 @@ TEST_F(GlTest, Ex03_3_GaussianWeightAndFilter) {
   WB_RUN_GLSL(w, "03.3", "result.x = gaussianWeight(IN(0).xy, IN(0).z);", int(win.size()), 1, win);
   for (size_t k = 0; k < win.size(); ++k) {
     const double want = std::exp(-(win[k].x * win[k].x + win[k].y * win[k].y) / (2.0 * win[k].z * win[k].z));
-    ASSERT_NEAR(w[k].x, want, 1e-5) << "WRONG: gaussianWeight(" << win[k].x << ", " << win[k].y << "; sigma " << win[k].z << ")";
+    ASSERT_NEAR(w[k].x, want, 1e-5) << "WRONG: gaussianWeight(" << win[k].x << ", " << win[k].y << "; sigma "
+                                    << win[k].z << ")";
   }
   const auto in = probes();
   std::vector<glm::vec4> got;
@@ -140,8 +141,8 @@ TEST_F(GlTest, Ex03_4_PoissonRotatesTheDiskPerPixel) {
     std::vector<glm::vec4> both;
     for (size_t k = 0; k < in.size(); ++k) both.push_back(in[k]), both.push_back(pixels[k]);
     std::vector<glm::vec4> got;
-    const std::string body = "result.x = pcfPoisson(wb_tex0, IN(0).xyz, " + std::to_string(count) +
-                             ", 2.5, uvec2(IN(1).xy), IN(0).w);";
+    const std::string body =
+        "result.x = pcfPoisson(wb_tex0, IN(0).xyz, " + std::to_string(count) + ", 2.5, uvec2(IN(1).xy), IN(0).w);";
     WB_RUN_GLSL(got, "03.4", body, int(in.size()), 2, both, {map.texture.id()});
     for (size_t k = 0; k < in.size(); ++k) {
       const double a = 2 * M_PI * hash[k].x, c = std::cos(a), s = std::sin(a);
@@ -192,12 +193,15 @@ TEST(Lab03, Ex03_1_SceneGrid5x5) {
   wb::test::expectSceneMatchesGolden("03.1", "grid_5x5", sets({"pcf.method=grid", "pcf.kernel=5"}), kTol, kMaxFraction);
 }
 TEST(Lab03, Ex03_3_SceneGaussian) {
-  wb::test::expectSceneMatchesGolden("03.3", "gaussian_5x5", sets({"pcf.method=gaussian", "pcf.kernel=5", "pcf.spacing=1.5"}), kTol, kMaxFraction);
+  wb::test::expectSceneMatchesGolden(
+      "03.3", "gaussian_5x5", sets({"pcf.method=gaussian", "pcf.kernel=5", "pcf.spacing=1.5"}), kTol, kMaxFraction);
 }
 TEST(Lab03, Ex03_4_ScenePoisson) {
-  wb::test::expectSceneMatchesGolden("03.4", "poisson_32", sets({"pcf.method=poisson", "pcf.poisson_count=32"}), kTol, kMaxFraction);
+  wb::test::expectSceneMatchesGolden("03.4", "poisson_32", sets({"pcf.method=poisson", "pcf.poisson_count=32"}), kTol,
+                                     kMaxFraction);
 }
 // The gather filter is held to the grid's golden data: the same answer from fewer fetches.
 TEST(Lab03, Ex03_5_SceneGatherMatchesGrid) {
-  wb::test::expectSceneMatchesGolden("03.5", "grid_5x5", sets({"pcf.method=gather", "pcf.kernel=5"}), kTol, kMaxFraction);
+  wb::test::expectSceneMatchesGolden("03.5", "grid_5x5", sets({"pcf.method=gather", "pcf.kernel=5"}), kTol,
+                                     kMaxFraction);
 }

@@ -49,7 +49,8 @@ struct LabResult {
 // Runs the sample lab with `args` and no display; captures its exit code and output.
 LabResult runLab(const std::string& args, const std::string& exe = wb::variant::kLabExe) {
   // One log per test: ctest runs the tests of this file in parallel processes.
-  const fs::path log = scratch("cli") / (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".log");
+  const fs::path log =
+      scratch("cli") / (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".log");
   const std::string cmd = "cd " + scratch("cli").string() + " && env -u DISPLAY -u WAYLAND_DISPLAY timeout 60 " + exe +
                           " " + args + " >" + log.string() + " 2>&1";
   const int status = std::system(cmd.c_str());

@@ -1,0 +1,52 @@
+/// @file prefilter.hpp
+/// The prefilter pipeline of the filterable shadow maps (ESM, VSM, EVSM, MSM): a colour shadow map
+/// that stores what the technique can average (warped depth, moments), a separable blur (box or
+/// Gaussian, 1 to 7 taps wide), and optional mipmaps for trilinear or anisotropic lookups.
+#pragma once
+#include "common/gl.hpp"
+
+#include <string>
+
+namespace wb {
+
+class Program;
+
+/// How a FilteredShadowMap stores and filters its values.
+struct PrefilterOptions {
+  GLenum format = GL_RG32F;  ///< GL_R32F, GL_RG32F, GL_RGBA32F or their 16-bit (…16F) forms
+  int kernel = 3;            ///< blur width in texels: 1 (no blur), 3, 5 or 7
+  bool gaussian = true;      ///< Gaussian weights (sigma = kernel / 4) instead of a box
+  bool mipmaps = false;      ///< build mipmaps after the blur (trilinear, anisotropic 8x)
+};
+
+/// A colour shadow map with a depth buffer, blurred in place after it is drawn.
+class FilteredShadowMap {
+ public:
+  /// (Re)allocates when the size or format changes.
+  void resize(int size, const PrefilterOptions& options);
+  /// Binds the framebuffer, sets the viewport and clears colour to `clear` and depth to 1.
+  void begin(const float clear[4]) const;
+  /// Blurs horizontally then vertically with the framework's blur (shaders/wb/blur.frag), or with
+  /// `blurProgram` when a lab brings its own; then builds the mipmaps if asked.
+  void prefilter(const Program& blurProgram);
+  /// The filtered texture (linear filtering; trilinear and anisotropic with mipmaps).
+  GLuint texture() const { return color_.id(); }
+  /// The unfiltered depth buffer of the same render (for a PCF fallback).
+  GLuint depthTexture() const { return depth_.id(); }
+  /// Width and height in texels.
+  int size() const { return size_; }
+  /// The options it was allocated with.
+  const PrefilterOptions& options() const { return options_; }
+
+ private:
+  Texture color_, scratch_, depth_;
+  Framebuffer fbo_, scratchFbo_, backFbo_;
+  VertexArray vao_;
+  int size_ = 0;
+  PrefilterOptions options_;
+};
+
+/// The largest value a format can hold: FLT_MAX for 32-bit floats, 65504 for 16-bit ones.
+double formatMax(GLenum format);
+
+}  // namespace wb
