@@ -10,7 +10,7 @@ table() { local name=$1; shift; "$solution" --headless "$@" --sweep-csv "$out/$n
 shot esm_c80 --set camera.bookmark=1 --set prefilter.kernel=5
 shot esm_c10 --set camera.bookmark=1 --set esm.c=10 --set prefilter.kernel=5
 shot esm_fp16 --set esm.format=fp16
-shot esm_vs_pcf_split --set camera.bookmark=2 --compare esm.c=10,80
+shot esm_c_split --set camera.bookmark=2 --compare esm.c=10,80
 "$student" --headless --size 640x360 --screenshot "$out/lab04_stubs.png" >/dev/null 2>&1 && echo "wrote $out/lab04_stubs.png"
 
 # Leaking against the exponent, measured against exact visibility (480x270).
