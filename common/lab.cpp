@@ -560,7 +560,7 @@ void Lab::frame(float dt) {
   }
   if (showMap_ && light_.depthMap) {
     const int s = frameSize_.y / 3;
-    glViewport(frameSize_.x - s - 8, 8, s, s);
+    glViewport(8, 8, s, s);  // bottom left: the Settings window covers the right side
     glDisable(GL_DEPTH_TEST);
     i.inset->use();
     i.inset->set("u_perspective", light_.light.type != LightType::Directional ? 1 : 0);
