@@ -172,10 +172,8 @@ TEST_F(GlTest, Ex02_6_ReceiverPlaneTapDepth) {
 namespace {
 const float kTol = 0.1f;
 const double kMaxFraction = 0.005;
-std::vector<std::string> with(const std::string& scene, std::vector<std::string> sets) {
-  std::vector<std::string> args = {"--scene", std::string(wb::variant::kSourceDir) + "/scenes/" + scene};
-  for (auto& s : sets) args.insert(args.end(), {"--set", s});
-  return args;
+std::vector<std::string> with(const std::string& scene, const std::vector<std::string>& sets) {
+  return wb::test::labArgs(sets, scene);
 }
 }  // namespace
 

@@ -182,26 +182,23 @@ TEST_F(GlTest, Ex03_5_GatherEqualsTheGrid) {
 namespace {
 const float kTol = 0.1f;
 const double kMaxFraction = 0.005;
-std::vector<std::string> sets(std::vector<std::string> s) {
-  std::vector<std::string> args;
-  for (auto& x : s) args.insert(args.end(), {"--set", x});
-  return args;
-}
 }  // namespace
 
 TEST(Lab03, Ex03_1_SceneGrid5x5) {
-  wb::test::expectSceneMatchesGolden("03.1", "grid_5x5", sets({"pcf.method=grid", "pcf.kernel=5"}), kTol, kMaxFraction);
+  wb::test::expectSceneMatchesGolden("03.1", "grid_5x5", wb::test::labArgs({"pcf.method=grid", "pcf.kernel=5"}), kTol,
+                                     kMaxFraction);
 }
 TEST(Lab03, Ex03_3_SceneGaussian) {
-  wb::test::expectSceneMatchesGolden(
-      "03.3", "gaussian_5x5", sets({"pcf.method=gaussian", "pcf.kernel=5", "pcf.spacing=1.5"}), kTol, kMaxFraction);
+  wb::test::expectSceneMatchesGolden("03.3", "gaussian_5x5",
+                                     wb::test::labArgs({"pcf.method=gaussian", "pcf.kernel=5", "pcf.spacing=1.5"}),
+                                     kTol, kMaxFraction);
 }
 TEST(Lab03, Ex03_4_ScenePoisson) {
-  wb::test::expectSceneMatchesGolden("03.4", "poisson_32", sets({"pcf.method=poisson", "pcf.poisson_count=32"}), kTol,
-                                     kMaxFraction);
+  wb::test::expectSceneMatchesGolden(
+      "03.4", "poisson_32", wb::test::labArgs({"pcf.method=poisson", "pcf.poisson_count=32"}), kTol, kMaxFraction);
 }
 // The gather filter is held to the grid's golden data: the same answer from fewer fetches.
 TEST(Lab03, Ex03_5_SceneGatherMatchesGrid) {
-  wb::test::expectSceneMatchesGolden("03.5", "grid_5x5", sets({"pcf.method=gather", "pcf.kernel=5"}), kTol,
+  wb::test::expectSceneMatchesGolden("03.5", "grid_5x5", wb::test::labArgs({"pcf.method=gather", "pcf.kernel=5"}), kTol,
                                      kMaxFraction);
 }

@@ -82,27 +82,22 @@ TEST_F(GlTest, Ex04_5_FallbackWhereTheValueExceedsOne) {
 namespace {
 const float kTol = 0.1f;
 const double kMaxFraction = 0.005;
-std::vector<std::string> sets(std::vector<std::string> s) {
-  std::vector<std::string> args;
-  for (auto& x : s) args.insert(args.end(), {"--set", x});
-  return args;
-}
 }  // namespace
 
 TEST(Lab04, Ex04_1_SceneEsm) {
-  wb::test::expectSceneMatchesGolden("04.1", "esm_c80", sets({"prefilter.kernel=5"}), kTol, kMaxFraction);
+  wb::test::expectSceneMatchesGolden("04.1", "esm_c80", wb::test::labArgs({"prefilter.kernel=5"}), kTol, kMaxFraction);
 }
 TEST(Lab04, Ex04_2_SceneLogSpace) {
-  wb::test::expectSceneMatchesGolden("04.2", "esm_log_c150", sets({"esm.log_space=true", "esm.c=150"}), kTol,
-                                     kMaxFraction);
+  wb::test::expectSceneMatchesGolden("04.2", "esm_log_c150", wb::test::labArgs({"esm.log_space=true", "esm.c=150"}),
+                                     kTol, kMaxFraction);
 }
 TEST(Lab04, Ex04_3_SceneEsm) {
-  wb::test::expectSceneMatchesGolden("04.3", "esm_c80", sets({"prefilter.kernel=5"}), kTol, kMaxFraction);
+  wb::test::expectSceneMatchesGolden("04.3", "esm_c80", wb::test::labArgs({"prefilter.kernel=5"}), kTol, kMaxFraction);
 }
 TEST(Lab04, Ex04_4_SceneFp16Clamped) {
-  wb::test::expectSceneMatchesGolden("04.4", "esm_fp16", sets({"esm.format=fp16"}), kTol, kMaxFraction);
+  wb::test::expectSceneMatchesGolden("04.4", "esm_fp16", wb::test::labArgs({"esm.format=fp16"}), kTol, kMaxFraction);
 }
 TEST(Lab04, Ex04_5_SceneFallback) {
-  wb::test::expectSceneMatchesGolden("04.5", "esm_fallback", sets({"esm.fallback=true", "esm.c=20"}), kTol,
+  wb::test::expectSceneMatchesGolden("04.5", "esm_fallback", wb::test::labArgs({"esm.fallback=true", "esm.c=20"}), kTol,
                                      kMaxFraction);
 }

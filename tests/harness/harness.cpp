@@ -47,6 +47,13 @@ std::vector<uint8_t> diffImage(const FloatImage& ref, const FloatImage& got, flo
 }
 }  // namespace
 
+std::vector<std::string> labArgs(const std::vector<std::string>& settings, const std::string& scene) {
+  std::vector<std::string> args;
+  if (!scene.empty()) args = {"--scene", (fs::path(variant::kSourceDir) / "scenes" / scene).string()};
+  for (const auto& s : settings) args.insert(args.end(), {"--set", s});
+  return args;
+}
+
 bool g_updateGolden = false;  // set by main() from --update-golden
 
 bool updatingGolden() { return g_updateGolden; }

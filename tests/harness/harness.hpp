@@ -56,6 +56,9 @@ std::vector<glm::vec4> runExercise(const std::string& id, const std::string& bod
     if (r.x <= -1e29f || r.y <= -1e29f || r.z <= -1e29f || r.w <= -1e29f) \
       FAIL() << "NOT IMPLEMENTED: the GLSL function still returns WB_TODO";
 
+/// Lab arguments for a scene test: `--set` for each "key=value", and `--scene scenes/<scene>` when given.
+std::vector<std::string> labArgs(const std::vector<std::string>& settings, const std::string& scene = "");
+
 /// Acne, leak and contact gap of one headless run (`--metrics`) of exercise `id`, isolated as in
 /// expectSceneMatchesGolden(); `failure` is set ("ERROR: …" or "NOT IMPLEMENTED: …") if it did not run.
 struct SceneMetrics {
