@@ -213,7 +213,7 @@ VisibilityMetrics compareVisibility(const FloatImage& rendered, const FloatImage
     if (e >= 0.5f)
       ++m.litPixels, m.acnePixels += r < 0.5f;
     else
-      ++m.shadowedPixels, m.leakPixels += r >= 0.5f;
+      ++m.shadowedPixels, m.leakPixels += r >= 0.5f, m.shadowLight += std::clamp(double(r), 0.0, 1.0);
   }
   return m;
 }

@@ -45,10 +45,14 @@ struct VisibilityMetrics {
   long acnePixels = 0;      ///< of those, drawn shadowed (visibility < 0.5)
   long shadowedPixels = 0;  ///< light-facing pixels in a cast shadow
   long leakPixels = 0;      ///< of those, drawn lit (visibility >= 0.5)
+  double shadowLight = 0;   ///< sum of the drawn visibility over those: partial light counts too
   /// Acne rate: the share of lit light-facing pixels drawn shadowed.
   double acneRate() const { return litPixels ? double(acnePixels) / litPixels : 0; }
   /// Light leak: the share of truly shadowed pixels drawn lit.
   double leakRate() const { return shadowedPixels ? double(leakPixels) / shadowedPixels : 0; }
+  /// Bleeding: the mean drawn visibility over truly shadowed pixels (0 for a perfect shadow), which
+  /// also counts the faint light that stays below the leak threshold.
+  double meanShadowLight() const { return shadowedPixels ? shadowLight / double(shadowedPixels) : 0; }
 };
 
 /// Compares `rendered` with `exact` on every pixel where `exact` is not NaN.

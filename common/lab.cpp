@@ -775,7 +775,7 @@ int Lab::sweep() {
       for (const auto& p : i.passes) passNames.push_back(p.first);
       std::vector<std::string> header;
       for (const auto& sw : i.sweeps) header.push_back(sw.first);
-      if (i.opt.metrics) header.insert(header.end(), {"acne_%", "leak_%", "contact_gap_texels"});
+      if (i.opt.metrics) header.insert(header.end(), {"acne_%", "leak_%", "contact_gap_texels", "shadow_light_%"});
       for (const auto& p : passNames) header.push_back(p + "_gpu_ms");
       header.emplace_back("frame_ms");
       row(header);
@@ -788,6 +788,7 @@ int Lab::sweep() {
       cells.push_back(fmt("%.2f", 100 * i.lastMetrics.acneRate()));
       cells.push_back(fmt("%.2f", 100 * i.lastMetrics.leakRate()));
       cells.push_back(i.lastGap < 0 ? "n/a" : fmt("%.1f", i.lastGap));
+      cells.push_back(fmt("%.2f", 100 * i.lastMetrics.meanShadowLight()));
     }
     for (const auto& p : passNames) {
       const PassStats& st = i.stats(p);
@@ -832,21 +833,23 @@ void Lab::measure(bool report) {
           r.pixels.push_back(rendered.pixels[k]), e.pixels.push_back(exact.pixels[k]), pos.push_back(positions[k]);
         }
       const VisibilityMetrics hm = compareVisibility(r, e, pos);
-      char line[160];
-      std::snprintf(line, sizeof line, "\n%s %s=%s: acne %.2f%%, leak %.2f%%", side ? "right" : "left ",
-                    i.compareKey.c_str(), (side ? i.compareB : i.compareA).c_str(), 100 * hm.acneRate(),
-                    100 * hm.leakRate());
+      char line[200];
+      std::snprintf(line, sizeof line, "\n%s %s=%s: acne %.2f%%, leak %.2f%%, light in shadows %.2f%%",
+                    side ? "right" : "left ", i.compareKey.c_str(), (side ? i.compareB : i.compareA).c_str(),
+                    100 * hm.acneRate(), 100 * hm.leakRate(), 100 * hm.meanShadowLight());
       halves += line;
     }
   }
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  char text[320];
+  char text[400];
   std::snprintf(
       text, sizeof text,
       "acne rate %.2f%% (%ld of %ld lit pixels drawn shadowed)\nlight leak %.2f%% (%ld of %ld shadowed pixels "
-      "drawn lit)\ncontact gap %s texels\n(exact visibility by ray casting, %.0f ms)",
+      "drawn lit)\ncontact gap %s texels\nlight in shadows %.2f%% (mean visibility where the light is blocked)\n"
+      "(exact visibility by ray casting, %.0f ms)",
       100 * m.acneRate(), m.acnePixels, m.litPixels, 100 * m.leakRate(), m.leakPixels, m.shadowedPixels,
-      gap < 0 ? "n/a" : std::to_string(gap).substr(0, std::to_string(gap).find('.') + 2).c_str(), ms);
+      gap < 0 ? "n/a" : std::to_string(gap).substr(0, std::to_string(gap).find('.') + 2).c_str(),
+      100 * m.meanShadowLight(), ms);
   i.measured = text + halves;
   i.lastMetrics = m;
   i.lastGap = gap;

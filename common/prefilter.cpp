@@ -57,6 +57,12 @@ void FilteredShadowMap::begin(const float clear[4]) const {
   glClear(GL_DEPTH_BUFFER_BIT);
 }
 
+void FilteredShadowMap::fill(const Program& program) const {
+  glBindVertexArray(vao_.id());
+  program.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
 void FilteredShadowMap::prefilter(const Program& blur) {
   if (options_.kernel > 1) {
     // Two passes of a 1D kernel: O(n) taps per texel instead of O(n²) for the 2D kernel.

@@ -26,6 +26,8 @@ class FilteredShadowMap {
   void resize(int size, const PrefilterOptions& options);
   /// Binds the framebuffer, sets the viewport and clears colour to `clear` and depth to 1.
   void begin(const float clear[4]) const;
+  /// Draws one full-map triangle with `program` (a synthetic map for experiments); call after begin().
+  void fill(const Program& program) const;
   /// Blurs horizontally then vertically with the framework's blur (shaders/wb/blur.frag), or with
   /// `blurProgram` when a lab brings its own; then builds the mipmaps if asked.
   void prefilter(const Program& blurProgram);

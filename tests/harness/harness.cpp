@@ -122,6 +122,14 @@ static ::testing::AssertionResult runIsolated(const std::string& id, const fs::p
   return ::testing::AssertionSuccess();
 }
 
+std::string runLabOutput(const std::string& id, const std::string& name, const std::vector<std::string>& args,
+                         std::string& failure) {
+  std::string log;
+  const auto ok = runIsolated(id, fs::path(variant::kOutputDir) / ("Ex" + id + "_" + name), args, log);
+  failure = ok ? "" : ok.message();
+  return log;
+}
+
 SceneMetrics measureScene(const std::string& id, const std::string& name, const std::vector<std::string>& args) {
   std::vector<std::string> all = {"--size", "480x270", "--metrics"};
   all.insert(all.end(), args.begin(), args.end());

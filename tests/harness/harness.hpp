@@ -59,6 +59,11 @@ std::vector<glm::vec4> runExercise(const std::string& id, const std::string& bod
 /// Lab arguments for a scene test: `--set` for each "key=value", and `--scene scenes/<scene>` when given.
 std::vector<std::string> labArgs(const std::vector<std::string>& settings, const std::string& scene = "");
 
+/// Runs the lab headless for exercise `id` (isolated as in expectSceneMatchesGolden()) with `args`
+/// and returns its output; `failure` is set ("ERROR: …" or "NOT IMPLEMENTED: …") if it did not run.
+std::string runLabOutput(const std::string& id, const std::string& name, const std::vector<std::string>& args,
+                         std::string& failure);
+
 /// Acne, leak and contact gap of one headless run (`--metrics`) of exercise `id`, isolated as in
 /// expectSceneMatchesGolden(); `failure` is set ("ERROR: …" or "NOT IMPLEMENTED: …") if it did not run.
 struct SceneMetrics {
