@@ -124,7 +124,7 @@ bool Settings::ui(const std::string& prefix) const {
       const char* n = s.name.c_str();
       switch (s.kind) {
         case Setting::Kind::Float:
-          changed |= ImGui::SliderFloat(n, static_cast<float*>(s.value), s.min, s.max);
+          changed |= ImGui::SliderFloat(n, static_cast<float*>(s.value), s.min, s.max, "%.4g");
           break;
         case Setting::Kind::Int:
           changed |= ImGui::SliderInt(n, static_cast<int*>(s.value), int(s.min), int(s.max));
