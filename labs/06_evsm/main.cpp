@@ -1,0 +1,103 @@
+// Lab 06: EVSM, exponential variance shadow maps
+// ---------------------------------------------------------------------------------------------
+// Difficulty: 3/5. Handout: README.md beside this file.
+// Exercises:  06.1, 06.3 in shaders/exercise.glsl; 06.2 in exercise.cpp.
+// Controls:   drag to orbit, wheel to zoom, 1-9 camera bookmarks, F12 screenshot.
+// VSM bleeds where occluders are far apart compared with their distance to the receiver. Warping
+// depth exponentially before taking moments squeezes that ratio, and a second, negative warp
+// catches what the first misses; the smaller of the two bounds is kept.
+#include "common/lab.hpp"
+#include "common/prefilter.hpp"
+#include "exercise.hpp"
+
+#include <algorithm>
+
+namespace {
+
+class EvsmLab : public wb::Lab {
+ public:
+  EvsmLab() : Lab("scenes/bench_bleeding.json") {
+    settings.add("evsm.c_positive", cPos, 1.0f, 100.0f, "exponent of the positive warp (clamped by 06.2)");
+    settings.add("evsm.c_negative", cNeg, 1.0f, 100.0f, "exponent of the negative warp (clamped by 06.2)");
+    settings.addChoice("evsm.channels", channels, {"2", "4"}, "2: positive warp only; 4: both warps");
+    settings.addChoice("evsm.format", format, {"fp32", "fp16"}, "the map's float format");
+    settings.add("evsm.min_variance", minVariance, 0.0f, 0.001f, "the smallest variance, before the warp's slope");
+    settings.add("evsm.bleeding_reduction", bleeding, 0.0f, 0.9f, "light-bleeding reduction amount");
+    settings.addChoice("prefilter.kernel", kernel, {"1", "3", "5", "7"}, "blur width in texels");
+    settings.add("prefilter.gaussian", gaussian, "Gaussian weights (off: box)");
+    settings.add("prefilter.mipmaps", mipmaps, "mipmaps with trilinear and 8x anisotropic filtering");
+    settings.assign("shadow.map_size=512");  // the blur's cost grows with the map's area (see lab 04)
+  }
+
+ protected:
+  void init() override {
+    momentsProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/depth.vert"}, {GL_FRAGMENT_SHADER, "moments.frag"}});
+    blurProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "wb/blur.frag"}});
+    sceneProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/scene.vert"}, {GL_FRAGMENT_SHADER, "scene.frag"}});
+    glslExercise("06.1", "exercise.glsl", "evsmMoments(0.5, 1.0, 1.0).x");
+    glslExercise("06.3", "exercise.glsl", "evsmVisibility(vec4(1.0), 0.5, 1.0, 1.0, 0.0, 0.0, 4)");
+  }
+
+  void render() override {
+    const wb::Light& light = scene.lights[lightIndex];
+    const glm::mat4 lightViewProj = wb::lightViewProj(light, scene);
+    const GLenum glFormat = format == 0 ? GL_RGBA32F : GL_RGBA16F;
+    map.resize(shadowMapSize(), {glFormat, 1 + 2 * kernel, gaussian, mipmaps});
+
+    // The exponents' bound (06.2): exp(c)^2 must fit the format.
+    float pos = cPos, neg = cNeg;
+    double bound = 0;
+    if (attempt("06.2", [&] { bound = lab06::evsmMaxExponent(wb::formatMax(glFormat)); }) &&
+        std::max(cPos, cNeg) > bound) {
+      pos = std::min(cPos, float(bound) * 0.999f), neg = std::min(cNeg, float(bound) * 0.999f);
+      warn("an EVSM exponent above " + std::to_string(bound) + " overflows " + (format == 0 ? "fp32" : "fp16") +
+           "; clamped");
+    }
+
+    // PASS 1: the warped moments from the light, then the separable prefilter.
+    {
+      auto timer = timePass("shadow");
+      const float far[4] = {std::exp(pos), std::exp(2 * pos), -std::exp(-neg), std::exp(-2 * neg)};  // depth 1
+      map.begin(far);
+      momentsProgram->set("u_lightViewProj", lightViewProj);
+      momentsProgram->set("u_alphaCutoff", alphaCutoff());
+      momentsProgram->set("u_cPos", pos);
+      momentsProgram->set("u_cNeg", neg);
+      gpuScene->draw(*momentsProgram);
+    }
+    {
+      auto timer = timePass("prefilter");
+      map.prefilter(*blurProgram);
+    }
+    showLight({light, lightViewProj, map.depthTexture(), map.size()});
+
+    // PASS 2: one filtered lookup per pixel.
+    auto timer = timePass("lighting");
+    const wb::Program& p = *sceneProgram;
+    beginCameraPass(p, lightViewProj, map.texture());
+    p.set("u_lightDir", light.direction);
+    p.set("u_cPos", pos);
+    p.set("u_cNeg", neg);
+    p.set("u_minVariance", minVariance);
+    p.set("u_bleeding", bleeding);
+    p.set("u_channels", channels == 0 ? 2 : 4);
+    gpuScene->draw(p);
+  }
+
+ private:
+  wb::Program *momentsProgram = nullptr, *blurProgram = nullptr;  // PASS 1
+  wb::Program* sceneProgram = nullptr;                            // PASS 2
+  wb::FilteredShadowMap map;
+  float cPos = 40.0f, cNeg = 5.0f;  // a well-known sample clamps to 42 (fp32)
+  int channels = 1;                 // 4 channels
+  int format = 0;                   // fp32
+  float minVariance = 1e-6f;        // before scaling by (c w)^2; larger values bleed (see the handout)
+  float bleeding = 0.0f;
+  int kernel = 0;  // width 1, 3, 5, 7 (1: bilinear only, so the lab stays above 30 fps on a CPU)
+  bool gaussian = true;
+  bool mipmaps = false;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) { return wb::run<EvsmLab>(argc, argv); }

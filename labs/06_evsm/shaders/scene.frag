@@ -1,0 +1,36 @@
+#version 450 core
+// PASS 2 of lab 06: one filtered lookup of the warped moments and the two-sided bound (06.3).
+#include "exercise.glsl"
+#include "wb/lighting.glsl"
+#include "wb/outputs.glsl"
+in vec3 v_world;
+in vec3 v_normal;
+in vec2 v_uv;
+uniform vec3 u_color;
+uniform sampler2D u_albedo;
+uniform int u_hasTexture;
+uniform float u_alphaCutoff;
+uniform sampler2D u_shadowMap;  // filtered (w+, w+^2, w-, w-^2)
+uniform mat4 u_lightViewProj;
+uniform vec3 u_lightDir;
+uniform float u_cPos, u_cNeg, u_minVariance, u_bleeding;
+uniform int u_channels;
+
+void main() {
+  vec4 texel = u_hasTexture != 0 ? texture(u_albedo, v_uv) : vec4(1.0);
+  if (texel.a < u_alphaCutoff) discard;
+  vec3 albedo = u_color * texel.rgb;
+  vec3 n = normalize(v_normal);
+  if (!gl_FrontFacing) n = -n;
+  vec3 toLight = -u_lightDir;
+  vec4 clip = u_lightViewProj * vec4(v_world, 1.0);
+  vec3 coord = clip.xyz / clip.w * 0.5 + 0.5;
+  vec4 moments = texture(u_shadowMap, coord.xy);
+  float visibility = evsmVisibility(moments, coord.z, u_cPos, u_cNeg, u_minVariance, u_bleeding, u_channels);
+  if (wbIsTodo(visibility) || wbIsTodo(moments.x)) {
+    wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
+    return;
+  }
+  bool facesLight = dot(n, toLight) > 0.0;
+  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(1.0), visibility), visibility, v_world, facesLight);
+}

@@ -1,0 +1,89 @@
+// Lab 06 tests. Layer 1: the warps and the two-sided bound against a double-precision reference;
+// layer 2: the bench scene against golden visibility (./workbook golden 06).
+#include "exercise.hpp"
+#include "tests/harness/harness.hpp"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+using wb::test::GlTest;
+
+namespace {
+double chebyshev(double m1, double m2, double w, double minVariance) {
+  if (w <= m1) return 1.0;
+  const double var = std::max(m2 - m1 * m1, minVariance), d = w - m1;
+  return var / (var + d * d);
+}
+}  // namespace
+
+// --- 06.1 ---------------------------------------------------------------------------------------------
+TEST_F(GlTest, Ex06_1_WarpsAndTheirSquares) {
+  std::vector<glm::vec4> in;
+  for (float z : {0.0f, 0.3f, 0.7f, 1.0f})
+    for (glm::vec2 c : {glm::vec2(40, 5), glm::vec2(10, 20)}) in.emplace_back(z, c, 0);
+  std::vector<glm::vec4> got;
+  WB_RUN_GLSL(got, "06.1", "result = evsmMoments(IN(0).x, IN(0).y, IN(0).z);", int(in.size()), 1, in);
+  for (size_t k = 0; k < in.size(); ++k) {
+    const double pos = std::exp(double(in[k].y) * in[k].x), neg = -std::exp(-double(in[k].z) * in[k].x);
+    const double want[4] = {pos, pos * pos, neg, neg * neg};
+    for (int a = 0; a < 4; ++a)
+      ASSERT_NEAR(got[k][a] / want[a], 1.0, 1e-4)
+          << "WRONG: component " << a << " for z " << in[k].x << ", c+ " << in[k].y << ", c- " << in[k].z;
+  }
+}
+
+// --- 06.2 ---------------------------------------------------------------------------------------------
+// exp(c)^2 = max  =>  c = ln(max) / 2: 44.36 for fp32, 5.545 for fp16.
+TEST(Lab06, Ex06_2_ExponentClamps) {
+  double fp32 = 0, fp16 = 0;
+  WB_TRY_EXERCISE(fp32 = lab06::evsmMaxExponent(double(FLT_MAX)));
+  WB_TRY_EXERCISE(fp16 = lab06::evsmMaxExponent(65504.0));
+  EXPECT_NEAR(fp32, 44.3614, 1e-3) << "WRONG: the fp32 clamp is ln(FLT_MAX) / 2";
+  EXPECT_NEAR(fp16, 5.5449, 1e-3) << "WRONG: the fp16 clamp is ln(65504) / 2";
+}
+
+// --- 06.3 ---------------------------------------------------------------------------------------------
+// Moments of a filter footprint that is half at depth a and half at depth b, for receivers in front,
+// between and behind; 2 and 4 channels; with and without bleeding reduction.
+TEST_F(GlTest, Ex06_3_SmallerOfTwoBounds) {
+  const double cp = 10, cn = 5;
+  std::vector<glm::vec4> in;
+  std::vector<double> want;
+  for (glm::vec2 ab : {glm::vec2(0.2f, 0.3f), glm::vec2(0.4f, 0.8f)})
+    for (float z : {0.1f, 0.35f, 0.5f, 0.9f})
+      for (int channels : {2, 4})
+        for (float bleeding : {0.0f, 0.3f}) {
+          double m[4] = {0, 0, 0, 0};
+          for (double d : {double(ab.x), double(ab.y)}) {
+            const double p = std::exp(cp * d), n = -std::exp(-cn * d);
+            m[0] += 0.5 * p, m[1] += 0.5 * p * p, m[2] += 0.5 * n, m[3] += 0.5 * n * n;
+          }
+          in.emplace_back(m[0], m[1], m[2], m[3]);
+          in.emplace_back(z, channels, bleeding, 0);
+          const double wp = std::exp(cp * z), wn = -std::exp(-cn * z), minVar = 1e-4;
+          double p = chebyshev(m[0], m[1], wp, minVar * (cp * wp) * (cp * wp));
+          if (channels == 4) p = std::min(p, chebyshev(m[2], m[3], wn, minVar * (cn * wn) * (cn * wn)));
+          want.push_back(std::clamp((p - bleeding) / (1.0 - bleeding), 0.0, 1.0));
+        }
+  std::vector<glm::vec4> got;
+  WB_RUN_GLSL(got, "06.3", "result.x = evsmVisibility(IN(0), IN(1).x, 10.0, 5.0, 1e-4, IN(1).z, int(IN(1).y));",
+              int(want.size()), 2, in);
+  for (size_t k = 0; k < want.size(); ++k)
+    ASSERT_NEAR(got[k].x, want[k], 2e-3) << "WRONG: receiver " << in[2 * k + 1].x << ", " << in[2 * k + 1].y
+                                         << " channels, bleeding reduction " << in[2 * k + 1].z << " (case " << k
+                                         << ")";
+}
+
+// --- Layer 2 ------------------------------------------------------------------------------------------
+TEST(Lab06, Ex06_1_SceneBench) {
+  wb::test::expectSceneMatchesGolden("06.1", "bench", wb::test::labArgs({"prefilter.kernel=5"}), 0.1f, 0.005);
+}
+TEST(Lab06, Ex06_2_SceneFp16) {
+  wb::test::expectSceneMatchesGolden("06.2", "bench_fp16",
+                                     wb::test::labArgs({"prefilter.kernel=5", "evsm.format=fp16"}), 0.1f, 0.005);
+}
+TEST(Lab06, Ex06_3_SceneTwoChannels) {
+  wb::test::expectSceneMatchesGolden("06.3", "bench_2ch", wb::test::labArgs({"prefilter.kernel=5", "evsm.channels=2"}),
+                                     0.1f, 0.005);
+}
