@@ -243,6 +243,22 @@ void Lab::renderShadowMap(const Program& depthProgram, const ShadowMap& map, con
   showLight({light, lightViewProj, map.texture(), map.size()});
 }
 
+void Lab::renderFilteredShadowMap(const Program& writer, FilteredShadowMap& map, const float far[4],
+                                  const Program& blur, const Light& light, const glm::mat4& lightViewProj) {
+  {
+    auto timer = timePass("shadow");
+    map.begin(far);
+    writer.set("u_lightViewProj", lightViewProj);
+    writer.set("u_alphaCutoff", alphaCutoff_);
+    gpuScene->draw(writer);
+  }
+  {
+    auto timer = timePass("prefilter");
+    map.prefilter(blur);
+  }
+  showLight({light, lightViewProj, map.depthTexture(), map.size()});
+}
+
 void Lab::beginCameraPass(const Program& program, const glm::mat4& lightViewProj, GLuint shadowMap) {
   bindFrameTarget();
   program.set("u_viewProj", viewProj());

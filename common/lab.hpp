@@ -6,6 +6,7 @@
 #include "common/camera.hpp"
 #include "common/error.hpp"
 #include "common/gl.hpp"
+#include "common/prefilter.hpp"
 #include "common/scene.hpp"
 #include "common/settings.hpp"
 #include "common/shader.hpp"
@@ -89,6 +90,12 @@ class Lab {
   /// `depthProgram` (setting u_lightViewProj and u_alphaCutoff), and shows `light` in the debug views.
   void renderShadowMap(const Program& depthProgram, const ShadowMap& map, const Light& light,
                        const glm::mat4& lightViewProj);
+  /// PASS 1 of the filterable techniques (ESM, VSM, EVSM): clears `map` to `far` (the stored value
+  /// of depth 1), draws the scene with `writer` (u_lightViewProj and u_alphaCutoff set; set the
+  /// rest first), prefilters it with `blur`, and shows `light` in the debug views. Times "shadow"
+  /// and "prefilter".
+  void renderFilteredShadowMap(const Program& writer, FilteredShadowMap& map, const float far[4], const Program& blur,
+                               const Light& light, const glm::mat4& lightViewProj);
   /// PASS 2 of most labs: binds the frame target and sets what every camera pass reads: u_viewProj,
   /// u_lightViewProj, u_alphaCutoff, and `shadowMap` on texture unit 0 as u_shadowMap.
   void beginCameraPass(const Program& program, const glm::mat4& lightViewProj, GLuint shadowMap);

@@ -8,7 +8,6 @@
 // lookup then gives a soft answer. The price: leaks near contacts, and an exponent bounded by the
 // float format.
 #include "common/lab.hpp"
-#include "common/prefilter.hpp"
 #include "exercise.hpp"
 
 #include <algorithm>
@@ -59,21 +58,10 @@ class EsmLab : public wb::Lab {
     }
 
     // PASS 1: the warped depth from the light, then the separable prefilter.
-    {
-      auto timer = timePass("shadow");
-      const float clear[4] = {logSpace ? cUsed : std::exp(std::min(cUsed, 88.0f)), 0, 0, 0};  // depth 1: far
-      map.begin(clear);
-      warpProgram->set("u_lightViewProj", lightViewProj);
-      warpProgram->set("u_alphaCutoff", alphaCutoff());
-      warpProgram->set("u_c", cUsed);
-      warpProgram->set("u_logSpace", logSpace ? 1 : 0);
-      gpuScene->draw(*warpProgram);
-    }
-    {
-      auto timer = timePass("prefilter");
-      map.prefilter(logSpace ? *logBlurProgram : *blurProgram);
-    }
-    showLight({light, lightViewProj, map.depthTexture(), map.size()});
+    const float far[4] = {logSpace ? cUsed : std::exp(std::min(cUsed, 88.0f)), 0, 0, 0};  // depth 1
+    warpProgram->set("u_c", cUsed);
+    warpProgram->set("u_logSpace", logSpace ? 1 : 0);
+    renderFilteredShadowMap(*warpProgram, map, far, logSpace ? *logBlurProgram : *blurProgram, light, lightViewProj);
 
     // PASS 2: one filtered lookup per pixel.
     auto timer = timePass("lighting");

@@ -8,7 +8,6 @@
 // generous for stacked occluders: light bleeds. The Experiments panel measures both facts.
 #include "common/glsl_harness.hpp"
 #include "common/lab.hpp"
-#include "common/prefilter.hpp"
 #include "exercise.hpp"
 
 #include <imgui.h>
@@ -48,19 +47,8 @@ class VsmLab : public wb::Lab {
     map.resize(shadowMapSize(), {GL_RG32F, 1 + 2 * kernel, gaussian, mipmaps});
 
     // PASS 1: the moments from the light, then the separable prefilter.
-    {
-      auto timer = timePass("shadow");
-      const float far[4] = {1, 1, 0, 0};  // depth 1: (M1, M2) = (1, 1)
-      map.begin(far);
-      momentsProgram->set("u_lightViewProj", lightViewProj);
-      momentsProgram->set("u_alphaCutoff", alphaCutoff());
-      gpuScene->draw(*momentsProgram);
-    }
-    {
-      auto timer = timePass("prefilter");
-      map.prefilter(*blurProgram);
-    }
-    showLight({light, lightViewProj, map.depthTexture(), map.size()});
+    const float far[4] = {1, 1, 0, 0};  // depth 1: (M1, M2) = (1, 1)
+    renderFilteredShadowMap(*momentsProgram, map, far, *blurProgram, light, lightViewProj);
 
     // PASS 2: one filtered lookup per pixel.
     auto timer = timePass("lighting");

@@ -7,7 +7,6 @@
 // depth exponentially before taking moments squeezes that ratio, and a second, negative warp
 // catches what the first misses; the smaller of the two bounds is kept.
 #include "common/lab.hpp"
-#include "common/prefilter.hpp"
 #include "exercise.hpp"
 
 #include <algorithm>
@@ -55,21 +54,10 @@ class EvsmLab : public wb::Lab {
     }
 
     // PASS 1: the warped moments from the light, then the separable prefilter.
-    {
-      auto timer = timePass("shadow");
-      const float far[4] = {std::exp(pos), std::exp(2 * pos), -std::exp(-neg), std::exp(-2 * neg)};  // depth 1
-      map.begin(far);
-      momentsProgram->set("u_lightViewProj", lightViewProj);
-      momentsProgram->set("u_alphaCutoff", alphaCutoff());
-      momentsProgram->set("u_cPos", pos);
-      momentsProgram->set("u_cNeg", neg);
-      gpuScene->draw(*momentsProgram);
-    }
-    {
-      auto timer = timePass("prefilter");
-      map.prefilter(*blurProgram);
-    }
-    showLight({light, lightViewProj, map.depthTexture(), map.size()});
+    const float far[4] = {std::exp(pos), std::exp(2 * pos), -std::exp(-neg), std::exp(-2 * neg)};  // depth 1
+    momentsProgram->set("u_cPos", pos);
+    momentsProgram->set("u_cNeg", neg);
+    renderFilteredShadowMap(*momentsProgram, map, far, *blurProgram, light, lightViewProj);
 
     // PASS 2: one filtered lookup per pixel.
     auto timer = timePass("lighting");
