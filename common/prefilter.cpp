@@ -1,6 +1,7 @@
 #include "common/prefilter.hpp"
 
 #include "common/error.hpp"
+#include "common/settings.hpp"
 #include "common/shader.hpp"
 
 #include <algorithm>
@@ -18,6 +19,13 @@ double formatMax(GLenum format) {
     default:
       return double(FLT_MAX);
   }
+}
+
+void PrefilterSettings::addTo(Settings& settings) {
+  settings.addChoice("prefilter.kernel", kernel, {"1", "3", "5", "7"}, "blur width in texels");
+  settings.add("prefilter.gaussian", gaussian, "Gaussian weights (off: box)");
+  settings.add("prefilter.mipmaps", mipmaps, "mipmaps with trilinear and 8x anisotropic filtering");
+  settings.assign("shadow.map_size=512");
 }
 
 void FilteredShadowMap::resize(int size, const PrefilterOptions& o) {

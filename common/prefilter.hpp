@@ -10,6 +10,7 @@
 namespace wb {
 
 class Program;
+class Settings;
 
 /// How a FilteredShadowMap stores and filters its values.
 struct PrefilterOptions {
@@ -17,6 +18,19 @@ struct PrefilterOptions {
   int kernel = 3;            ///< blur width in texels: 1 (no blur), 3, 5 or 7
   bool gaussian = true;      ///< Gaussian weights (sigma = kernel / 4) instead of a box
   bool mipmaps = false;      ///< build mipmaps after the blur (trilinear, anisotropic 8x)
+};
+
+/// The prefilter's settings, the same in every filterable lab: prefilter.kernel, prefilter.gaussian
+/// and prefilter.mipmaps.
+struct PrefilterSettings {
+  int kernel = 0;        ///< width index into 1, 3, 5, 7 texels (1: bilinear only, interactive on a CPU)
+  bool gaussian = true;  ///< Gaussian weights instead of a box
+  bool mipmaps = false;  ///< mipmaps with trilinear and 8x anisotropic lookups
+  /// Registers the three settings, and makes 512² the default map size: the blur's cost grows with
+  /// the map's area.
+  void addTo(Settings& settings);
+  /// The options for a map stored in `format`.
+  PrefilterOptions options(GLenum format) const { return {format, 1 + 2 * kernel, gaussian, mipmaps}; }
 };
 
 /// A colour shadow map with a depth buffer, blurred in place after it is drawn.

@@ -22,12 +22,7 @@ class EsmLab : public wb::Lab {
     settings.add("esm.log_space", logSpace, "store c z and filter in log space (04.2): no bound on c");
     settings.add("esm.fallback", fallback, "fall back to 3x3 PCF where ESM's assumption fails (04.5)");
     settings.add("esm.epsilon", epsilon, 0.0f, 1.0f, "fallback threshold: ESM value above 1 + epsilon");
-    settings.addChoice("prefilter.kernel", kernel, {"1", "3", "5", "7"}, "blur width in texels");
-    settings.add("prefilter.gaussian", gaussian, "Gaussian weights (off: box)");
-    settings.add("prefilter.mipmaps", mipmaps, "mipmaps with trilinear and 8x anisotropic filtering");
-    // The blur touches every texel twice per frame: on a CPU renderer a 512² map keeps the lab
-    // interactive (the handout's cost tables show why).
-    settings.assign("shadow.map_size=512");
+    prefilter.addTo(settings);
   }
 
  protected:
@@ -46,7 +41,7 @@ class EsmLab : public wb::Lab {
     const wb::Light& light = scene.lights[lightIndex];
     const glm::mat4 lightViewProj = wb::lightViewProj(light, scene);
     const GLenum glFormat = format == 0 ? GL_R32F : GL_R16F;
-    map.resize(shadowMapSize(), {glFormat, 1 + 2 * kernel, gaussian, mipmaps});
+    map.resize(shadowMapSize(), prefilter.options(glFormat));
 
     // The exponent's bound (04.4): exp(c) must fit the format, unless the map is in log space.
     float cUsed = c;
@@ -87,9 +82,7 @@ class EsmLab : public wb::Lab {
   bool logSpace = false;  // filter c z in log space
   bool fallback = false;  // PCF where the ESM value exceeds 1 + epsilon
   float epsilon = 0.05f;
-  int kernel = 0;  // width 1, 3, 5, 7 (1: bilinear only, so the lab stays above 30 fps on a CPU)
-  bool gaussian = true;
-  bool mipmaps = false;
+  wb::PrefilterSettings prefilter;  // prefilter.*: no blur by default, so the lab stays interactive on a CPU
 };
 
 }  // namespace

@@ -21,11 +21,8 @@ class VsmLab : public wb::Lab {
   VsmLab() : Lab("scenes/bench_bleeding.json") {
     settings.add("vsm.min_variance", minVariance, 0.0f, 0.001f, "the smallest variance Chebyshev's bound may use");
     settings.add("vsm.bleeding_reduction", bleeding, 0.0f, 0.9f, "light-bleeding reduction: p below this becomes 0");
-    settings.addChoice("prefilter.kernel", kernel, {"1", "3", "5", "7"}, "blur width in texels");
-    settings.add("prefilter.gaussian", gaussian, "Gaussian weights (off: box)");
-    settings.add("prefilter.mipmaps", mipmaps, "mipmaps with trilinear and 8x anisotropic filtering");
+    prefilter.addTo(settings);
     settings.add("vsm.experiments", printExperiments, "print the three-plane and two-plane experiments at start");
-    settings.assign("shadow.map_size=512");  // the blur's cost grows with the map's area (see lab 04)
   }
 
  protected:
@@ -44,7 +41,7 @@ class VsmLab : public wb::Lab {
   void render() override {
     const wb::Light& light = scene.lights[lightIndex];
     const glm::mat4 lightViewProj = wb::lightViewProj(light, scene);
-    map.resize(shadowMapSize(), {GL_RG32F, 1 + 2 * kernel, gaussian, mipmaps});
+    map.resize(shadowMapSize(), prefilter.options(GL_RG32F));
 
     // PASS 1: the moments from the light, then the separable prefilter.
     const float far[4] = {1, 1, 0, 0};  // depth 1: (M1, M2) = (1, 1)
@@ -140,11 +137,9 @@ class VsmLab : public wb::Lab {
   wb::Program *momentsProgram = nullptr, *planesProgram = nullptr, *blurProgram = nullptr;  // PASS 1
   wb::Program* sceneProgram = nullptr;                                                      // PASS 2
   wb::FilteredShadowMap map;
-  float minVariance = 2e-5f;  // keeps the bound from dividing by a vanishing variance
-  float bleeding = 0.0f;      // light-bleeding reduction amount
-  int kernel = 0;             // width 1, 3, 5, 7 (1: bilinear only, so the lab stays above 30 fps on a CPU)
-  bool gaussian = true;
-  bool mipmaps = false;
+  float minVariance = 2e-5f;        // keeps the bound from dividing by a vanishing variance
+  float bleeding = 0.0f;            // light-bleeding reduction amount
+  wb::PrefilterSettings prefilter;  // prefilter.*: no blur by default, so the lab stays interactive on a CPU
   bool printExperiments = false;
   std::vector<float> measured, formula;  // the three-plane curves for the plot
   float vsmVsPcf = 0;

@@ -22,10 +22,7 @@ class EvsmLab : public wb::Lab {
     settings.addChoice("evsm.format", format, {"fp32", "fp16"}, "the map's float format");
     settings.add("evsm.min_variance", minVariance, 0.0f, 0.001f, "the smallest variance, before the warp's slope");
     settings.add("evsm.bleeding_reduction", bleeding, 0.0f, 0.9f, "light-bleeding reduction amount");
-    settings.addChoice("prefilter.kernel", kernel, {"1", "3", "5", "7"}, "blur width in texels");
-    settings.add("prefilter.gaussian", gaussian, "Gaussian weights (off: box)");
-    settings.add("prefilter.mipmaps", mipmaps, "mipmaps with trilinear and 8x anisotropic filtering");
-    settings.assign("shadow.map_size=512");  // the blur's cost grows with the map's area (see lab 04)
+    prefilter.addTo(settings);
   }
 
  protected:
@@ -41,7 +38,7 @@ class EvsmLab : public wb::Lab {
     const wb::Light& light = scene.lights[lightIndex];
     const glm::mat4 lightViewProj = wb::lightViewProj(light, scene);
     const GLenum glFormat = format == 0 ? GL_RGBA32F : GL_RGBA16F;
-    map.resize(shadowMapSize(), {glFormat, 1 + 2 * kernel, gaussian, mipmaps});
+    map.resize(shadowMapSize(), prefilter.options(glFormat));
 
     // The exponents' bound (06.2): exp(c)^2 must fit the format.
     float pos = cPos, neg = cNeg;
@@ -81,9 +78,7 @@ class EvsmLab : public wb::Lab {
   int format = 0;                   // fp32
   float minVariance = 1e-6f;        // before scaling by (c w)^2; larger values bleed (see the handout)
   float bleeding = 0.0f;
-  int kernel = 0;  // width 1, 3, 5, 7 (1: bilinear only, so the lab stays above 30 fps on a CPU)
-  bool gaussian = true;
-  bool mipmaps = false;
+  wb::PrefilterSettings prefilter;  // prefilter.*: no blur by default, so the lab stays interactive on a CPU
 };
 
 }  // namespace
