@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <random>
 
 using wb::test::GlTest;
 
@@ -75,6 +76,106 @@ TEST_F(GlTest, Ex06_3_SmallerOfTwoBounds) {
                                          << ")";
 }
 
+// --- 06.x (extension) ---------------------------------------------------------------------------------
+namespace {
+// A filter footprint as a few depths with weights: its four power moments, the true visibility of a
+// receiver (the weight at or behind it) and VSM's Chebyshev bound from the first two moments.
+struct Footprint {
+  std::vector<double> depth, weight;
+  glm::vec4 moments() const {
+    double m[4] = {0, 0, 0, 0};
+    for (size_t k = 0; k < depth.size(); ++k)
+      for (int p = 0; p < 4; ++p) m[p] += weight[k] * std::pow(depth[k], p + 1);
+    return glm::vec4(m[0], m[1], m[2], m[3]);
+  }
+  double truth(double z) const {
+    double v = 0;
+    for (size_t k = 0; k < depth.size(); ++k) v += depth[k] >= z ? weight[k] : 0;
+    return v;
+  }
+  double vsm(double z) const { return chebyshev(moments().x, moments().y, z, 1e-6); }
+};
+
+void msm(const std::vector<Footprint>& fps, const std::vector<double>& z, std::vector<glm::vec4>& got) {
+  std::vector<glm::vec4> in;
+  for (size_t k = 0; k < fps.size(); ++k) in.push_back(fps[k].moments()), in.emplace_back(float(z[k]), 0, 0, 0);
+  WB_RUN_GLSL(got, "06.x", "result.x = msmVisibility(IN(0), IN(1).x, 3e-5);", int(fps.size()), 2, in);
+}
+}  // namespace
+
+TEST_F(GlTest, Ex06_x_MomentsArePowers) {
+  std::vector<glm::vec4> in, got;
+  for (float z : {0.0f, 0.25f, 0.6f, 1.0f}) in.emplace_back(z, 0, 0, 0);
+  WB_RUN_GLSL(got, "06.x", "result = msmMoments(IN(0).x);", int(in.size()), 1, in);
+  for (size_t k = 0; k < in.size(); ++k)
+    for (int p = 0; p < 4; ++p)
+      ASSERT_NEAR(got[k][p], std::pow(in[k].x, p + 1), 1e-6) << "WRONG: moment " << p + 1 << " of depth " << in[k].x;
+}
+
+// Four moments pin down a footprint of two depths exactly (up to the moment bias): in front of both the
+// receiver is lit, between them it gets the far depth's weight, behind both it is dark, where VSM's
+// bound still lets light through.
+TEST_F(GlTest, Ex06_x_TwoDepthsReconstructed) {
+  std::vector<Footprint> fps;
+  std::vector<double> z;
+  for (const Footprint& f :
+       {Footprint{{0.3, 0.7}, {0.4, 0.6}}, Footprint{{0.2, 0.9}, {0.5, 0.5}}, Footprint{{0.4, 0.6}, {0.7, 0.3}}})
+    for (double r : {0.1, 0.5, 0.95}) fps.push_back(f), z.push_back(r);
+  std::vector<glm::vec4> got;
+  msm(fps, z, got);
+  if (HasFatalFailure()) return;
+  for (size_t k = 0; k < fps.size(); ++k) {
+    ASSERT_TRUE(std::isfinite(got[k].x)) << "WRONG: not a number for the receiver at " << z[k]
+                                         << " (is the moment bias applied before solving?)";
+    EXPECT_NEAR(got[k].x, fps[k].truth(z[k]), 0.02)
+        << "WRONG: depths " << fps[k].depth[0] << " and " << fps[k].depth[1] << " with weights " << fps[k].weight[0]
+        << " and " << fps[k].weight[1] << ", receiver at " << z[k] << " (VSM's bound there: " << fps[k].vsm(z[k])
+        << ")";
+  }
+}
+
+// A footprint of one depth (a flat stretch of the map) makes the moment matrix singular; the moment
+// bias keeps it solvable, so a receiver a little in front is lit and one a little behind is dark.
+TEST_F(GlTest, Ex06_x_OneDepth) {
+  std::vector<Footprint> fps;
+  std::vector<double> z;
+  for (double d : {0.2, 0.5, 0.8})
+    for (double r : {d - 0.05, d + 0.05}) fps.push_back(Footprint{{d}, {1.0}}), z.push_back(r);
+  std::vector<glm::vec4> got;
+  msm(fps, z, got);
+  if (HasFatalFailure()) return;
+  for (size_t k = 0; k < fps.size(); ++k)
+    EXPECT_TRUE(std::isfinite(got[k].x) && std::abs(got[k].x - fps[k].truth(z[k])) < 0.05)
+        << "WRONG: one depth " << fps[k].depth[0] << ", receiver at " << z[k] << ": got " << got[k].x << ", want "
+        << fps[k].truth(z[k]) << " (is the moment bias applied before solving?)";
+}
+
+// Hamburger MSM returns the sharpest bound four moments allow: never darker than the truth, never
+// lighter than Chebyshev's bound from two moments. Random footprints of three depths check both sides.
+TEST_F(GlTest, Ex06_x_BetweenTruthAndChebyshev) {
+  std::mt19937 rng(6);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Footprint> fps;
+  std::vector<double> z;
+  while (fps.size() < 200) {
+    Footprint f{{u(rng), u(rng), u(rng)}, {u(rng) + 0.05, u(rng) + 0.05, u(rng) + 0.05}};
+    const double sum = f.weight[0] + f.weight[1] + f.weight[2], r = u(rng);
+    for (double& w : f.weight) w /= sum;
+    if (std::abs(r - f.depth[0]) < 0.03 || std::abs(r - f.depth[1]) < 0.03 || std::abs(r - f.depth[2]) < 0.03) continue;
+    fps.push_back(f), z.push_back(r);
+  }
+  std::vector<glm::vec4> got;
+  msm(fps, z, got);
+  if (HasFatalFailure()) return;
+  for (size_t k = 0; k < fps.size(); ++k) {
+    const double v = got[k].x, truth = fps[k].truth(z[k]), vsm = fps[k].vsm(z[k]);
+    ASSERT_TRUE(std::isfinite(v) && v >= truth - 0.02 && v <= vsm + 0.02)
+        << "WRONG: footprint " << k << " (depths " << fps[k].depth[0] << ", " << fps[k].depth[1] << ", "
+        << fps[k].depth[2] << "), receiver at " << z[k] << ": got " << v << ", the truth is " << truth
+        << " and VSM's bound " << vsm << "; MSM must lie between them";
+  }
+}
+
 // --- Layer 2 ------------------------------------------------------------------------------------------
 TEST(Lab06, Ex06_1_SceneBench) {
   wb::test::expectSceneMatchesGolden("06.1", "bench", wb::test::labArgs({"prefilter.kernel=5"}), 0.1f, 0.005);
@@ -86,4 +187,8 @@ TEST(Lab06, Ex06_2_SceneFp16) {
 TEST(Lab06, Ex06_3_SceneTwoChannels) {
   wb::test::expectSceneMatchesGolden("06.3", "bench_2ch", wb::test::labArgs({"prefilter.kernel=5", "evsm.channels=2"}),
                                      0.1f, 0.005);
+}
+TEST(Lab06, Ex06_x_SceneBenchMsm) {
+  wb::test::expectSceneMatchesGolden("06.x", "bench_msm",
+                                     wb::test::labArgs({"prefilter.kernel=5", "evsm.technique=msm"}), 0.1f, 0.005);
 }

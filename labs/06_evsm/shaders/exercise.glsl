@@ -16,3 +16,20 @@ float evsmVisibility(vec4 moments, float depth, float cPos, float cNeg, float mi
   return WB_TODO;
   // Hint: for the negative warp the mean is negative and "beyond" still means a larger warped value.
 }
+
+// EXERCISE 06.x (extension): moment shadow maps, Hamburger with four moments. msmMoments stores the
+// powers (z, z^2, z^3, z^4). msmVisibility first pulls the filtered moments b a little towards
+// (0.5, 0.5, 0.5, 0.5) (b' = (1 - momentBias) b + momentBias 0.5) so the system below is solvable,
+// then finds the two other support depths of the three-point distribution that matches b' and puts
+// one point at the receiver: solve the 3x3 Hankel system [1 b1 b2; b1 b2 b3; b2 b3 b4] c = (1, z, z^2)
+// (Cholesky), take the roots z2 <= z3 of c3 x^2 + c2 x + c1 = 0, and return 1 - G, where
+//   G = 0                                                     if z <= z2
+//   G = (z z3 - b1 (z + z3) + b2) / ((z3 - z2) (z - z2))      if z2 < z <= z3
+//   G = 1 - (z2 z3 - b1 (z2 + z3) + b2) / ((z - z2) (z - z3)) otherwise.
+vec4 msmMoments(float depth) {
+  return vec4(WB_TODO);
+}
+
+float msmVisibility(vec4 moments, float depth, float momentBias) {
+  return WB_TODO;
+}

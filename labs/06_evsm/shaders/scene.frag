@@ -1,5 +1,6 @@
 #version 450 core
-// PASS 2 of lab 06: one filtered lookup of the warped moments and the two-sided bound (06.3).
+// PASS 2 of lab 06: one filtered lookup of the warped moments and the two-sided bound (06.3), or of
+// the four powers of depth and their reconstruction (06.x).
 #include "exercise.glsl"
 #include "wb/lighting.glsl"
 #include "wb/outputs.glsl"
@@ -10,11 +11,13 @@ uniform vec3 u_color;
 uniform sampler2D u_albedo;
 uniform int u_hasTexture;
 uniform float u_alphaCutoff;
-uniform sampler2D u_shadowMap;  // filtered (w+, w+^2, w-, w-^2)
+uniform sampler2D u_shadowMap;  // filtered (w+, w+^2, w-, w-^2), or (z, z^2, z^3, z^4) for MSM
 uniform mat4 u_lightViewProj;
 uniform vec3 u_lightDir;
 uniform float u_cPos, u_cNeg, u_minVariance, u_bleeding;
 uniform int u_channels;
+uniform int u_msm;
+uniform float u_momentBias;
 
 void main() {
   vec4 texel = u_hasTexture != 0 ? texture(u_albedo, v_uv) : vec4(1.0);
@@ -26,7 +29,8 @@ void main() {
   vec4 clip = u_lightViewProj * vec4(v_world, 1.0);
   vec3 coord = clip.xyz / clip.w * 0.5 + 0.5;
   vec4 moments = texture(u_shadowMap, coord.xy);
-  float visibility = evsmVisibility(moments, coord.z, u_cPos, u_cNeg, u_minVariance, u_bleeding, u_channels);
+  float visibility = u_msm != 0 ? msmVisibility(moments, coord.z, u_momentBias)
+                                : evsmVisibility(moments, coord.z, u_cPos, u_cNeg, u_minVariance, u_bleeding, u_channels);
   if (wbIsTodo(visibility) || wbIsTodo(moments.x)) {
     wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
     return;
