@@ -50,6 +50,7 @@ inline void framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }  ///< delet
 inline void vertexArray(GLuint id) { glDeleteVertexArrays(1, &id); }  ///< deletes one vertexArray
 inline void program(GLuint id) { glDeleteProgram(id); }               ///< deletes one program
 inline void query(GLuint id) { glDeleteQueries(1, &id); }             ///< deletes one query
+inline void sampler(GLuint id) { glDeleteSamplers(1, &id); }          ///< deletes one sampler
 }  // namespace gldelete
 
 using Buffer = GlObject<gldelete::buffer>;            ///< owns a buffer object
@@ -58,6 +59,7 @@ using Framebuffer = GlObject<gldelete::framebuffer>;  ///< owns a framebuffer ob
 using VertexArray = GlObject<gldelete::vertexArray>;  ///< owns a vertex array object
 using ProgramId = GlObject<gldelete::program>;        ///< owns a program object
 using Query = GlObject<gldelete::query>;              ///< owns a query object
+using Sampler = GlObject<gldelete::sampler>;          ///< owns a sampler object
 
 /// Creates a 2D texture with storage (one level) and the given filter and wrap modes.
 Texture makeTexture2D(GLenum internalFormat, int w, int h, GLenum filter = GL_NEAREST, GLenum wrap = GL_CLAMP_TO_EDGE);

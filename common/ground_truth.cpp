@@ -218,6 +218,18 @@ VisibilityMetrics compareVisibility(const FloatImage& rendered, const FloatImage
   return m;
 }
 
+ReferenceDifference compareWithReference(const FloatImage& rendered, const std::vector<float>& reference, int x0,
+                                         int x1) {
+  ReferenceDifference d;
+  for (size_t i = 0; i < reference.size() && i < rendered.pixels.size(); ++i) {
+    const int x = int(i % size_t(rendered.width));
+    if (reference[i] < 0 || x < x0 || x >= x1) continue;
+    const double diff = double(std::clamp(rendered.pixels[i], 0.0f, 1.0f)) - double(reference[i]);
+    ++d.pixels, d.absSum += std::abs(diff), d.lighter += diff > 0.1, d.darker += diff < -0.1;
+  }
+  return d;
+}
+
 double contactGapTexels(const FloatImage& rendered, const FloatImage& exact, const std::vector<glm::vec4>& positions,
                         const RayScene& rays, const Light& light, float groundY, float texelWorld) {
   constexpr size_t kBins = 64;                                             // half-texel bins up to 32 texels

@@ -59,6 +59,25 @@ struct VisibilityMetrics {
 VisibilityMetrics compareVisibility(const FloatImage& rendered, const FloatImage& exact,
                                     const std::vector<glm::vec4>& positions);
 
+/// How a rendered visibility differs from a reference rendering of the same frame (PCF over the same
+/// footprint, see PcfReference) on the pixels the reference covers (value >= 0).
+struct ReferenceDifference {
+  long pixels = 0;    ///< light-facing pixels compared
+  long lighter = 0;   ///< of those, drawn lighter than the reference by more than 0.1 (bleeding)
+  long darker = 0;    ///< of those, drawn darker than the reference by more than 0.1
+  double absSum = 0;  ///< the sum of |rendered - reference|
+  /// The mean absolute difference.
+  double meanAbs() const { return pixels ? absSum / double(pixels) : 0; }
+  /// The share of pixels drawn lighter than the reference by more than 0.1.
+  double lighterRate() const { return pixels ? double(lighter) / double(pixels) : 0; }
+  /// The share of pixels drawn darker than the reference by more than 0.1.
+  double darkerRate() const { return pixels ? double(darker) / double(pixels) : 0; }
+};
+
+/// Compares `rendered` with `reference` (same size, `width` pixels a row) in the columns [x0, x1).
+ReferenceDifference compareWithReference(const FloatImage& rendered, const std::vector<float>& reference, int x0,
+                                         int x1);
+
 /// Peter-panning on the ground: the distance between a caster's contact line and where its shadow
 /// starts, in shadow-map texels, for the worst caster resting on the ground. Every ground pixel (y within 1e-3 of
 /// `groundY`) that is truly in a cast shadow is binned, per caster, by its horizontal distance to the

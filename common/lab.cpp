@@ -56,6 +56,14 @@ struct Options {
   int frames = -1;  // -1: until the window closes (headless: 1, bench: 60)
 };
 
+// printf into a std::string (the measurement texts).
+template <typename... Args>
+std::string strf(const char* format, Args... args) {
+  char text[512];
+  std::snprintf(text, sizeof text, format, args...);
+  return text;
+}
+
 struct PassStats {
   double last = 0, sum = 0, min = 1e30, max = 0;
   int count = 0;
@@ -97,6 +105,10 @@ struct Lab::Impl {
   glm::ivec2 savedSize{0};
   VisibilityMetrics lastMetrics, leftMetrics, rightMetrics;
   double lastGap = -1;
+  // The PCF reference of the filtered techniques, and the light each half of a split screen used.
+  PcfReference pcf;
+  LightView sideLight[2];
+  ReferenceDifference lastReference;
   // --sweep key=v1,v2,...: every combination is rendered and measured; --sweep-csv saves the table.
   std::vector<std::pair<std::string, std::vector<std::string>>> sweeps;
   std::string sweepCsv;
@@ -256,7 +268,7 @@ void Lab::renderFilteredShadowMap(const Program& writer, FilteredShadowMap& map,
     auto timer = timePass("prefilter");
     map.prefilter(blur);
   }
-  showLight({light, lightViewProj, map.depthTexture(), map.size()});
+  showLight({light, lightViewProj, map.depthTexture(), map.size(), map.options().kernel, map.options().gaussian});
 }
 
 void Lab::beginCameraPass(const Program& program, const glm::mat4& lightViewProj, GLuint shadowMap) {
@@ -537,6 +549,7 @@ void Lab::frame(float dt) {
   const std::string before = split ? settings.value(i.compareKey) : "";
   if (split) settings.assign(i.compareKey + "=" + i.compareA);
   drawScene(programsOk);
+  i.sideLight[0] = light_;
   if (split) {
     const int half = frameSize_.x / 2;
     if (!i.saved[0].id() || i.savedSize != frameSize_) {  // copies of the left half's attachments
@@ -551,6 +564,7 @@ void Lab::frame(float dt) {
                          frameSize_.y, 1);
     settings.assign(i.compareKey + "=" + i.compareB);
     drawScene(programsOk);
+    i.sideLight[1] = light_;
     for (int t = 0; t < 3; ++t)
       glCopyImageSubData(i.saved[t].id(), GL_TEXTURE_2D, 0, 0, 0, 0, targets[t], GL_TEXTURE_2D, 0, 0, 0, 0, half,
                          frameSize_.y, 1);
@@ -791,7 +805,9 @@ int Lab::sweep() {
       for (const auto& p : i.passes) passNames.push_back(p.first);
       std::vector<std::string> header;
       for (const auto& sw : i.sweeps) header.push_back(sw.first);
-      if (i.opt.metrics) header.insert(header.end(), {"acne_%", "leak_%", "contact_gap_texels", "shadow_light_%"});
+      if (i.opt.metrics)
+        header.insert(header.end(),
+                      {"acne_%", "leak_%", "contact_gap_texels", "shadow_light_%", "pcf_diff_%", "pcf_lighter_%"});
       for (const auto& p : passNames) header.push_back(p + "_gpu_ms");
       header.emplace_back("frame_ms");
       row(header);
@@ -805,6 +821,9 @@ int Lab::sweep() {
       cells.push_back(fmt("%.2f", 100 * i.lastMetrics.leakRate()));
       cells.push_back(i.lastGap < 0 ? "n/a" : fmt("%.1f", i.lastGap));
       cells.push_back(fmt("%.2f", 100 * i.lastMetrics.meanShadowLight()));
+      const bool ref = i.lastReference.pixels > 0;
+      cells.push_back(ref ? fmt("%.2f", 100 * i.lastReference.meanAbs()) : "n/a");
+      cells.push_back(ref ? fmt("%.2f", 100 * i.lastReference.lighterRate()) : "n/a");
     }
     for (const auto& p : passNames) {
       const PassStats& st = i.stats(p);
@@ -838,8 +857,34 @@ void Lab::measure(bool report) {
   if (light_.depthMap && light.type == LightType::Directional && light_.mapSize > 0)
     gap = contactGapTexels(rendered, exact, positions, *i.rays, light, scene.boundsMin.y,
                            texelWorldSize(light_.viewProj, light_.mapSize));
+  // Against PCF over the footprint each side filtered with (orthographic maps only); in split
+  // screen the left side's reference needs the map it was drawn with, so its size must match.
+  const bool split = i.compareOn && !i.compareKey.empty();
+  std::vector<float> reference[2];
+  auto referenceFor = [&](int side) -> const std::vector<float>* {
+    const LightView& s = split ? i.sideLight[side] : light_;
+    if (!light_.depthMap || light.type != LightType::Directional || s.mapSize != light_.mapSize) return nullptr;
+    if (reference[side].empty())
+      reference[side] =
+          i.pcf.render(i.position.id(), w, h, light_.depthMap, light_.mapSize, light_.viewProj, s.kernel, s.gaussian);
+    return &reference[side];
+  };
+  auto describe = [](const LightView& s) {
+    return std::to_string(s.kernel) + "x" + std::to_string(s.kernel) + (s.kernel > 1 && s.gaussian ? " Gaussian" : "");
+  };
+  std::string pcfText = "against PCF: n/a (directional lights only)";
+  i.lastReference = {};
+  if (const auto* ref = referenceFor(split ? 1 : 0)) {
+    i.lastReference = compareWithReference(rendered, *ref, 0, w);
+    pcfText = strf(
+        "against PCF over the same footprint (%s): |difference| %.2f%%,\n  lighter by > 0.1 on "
+        "%.2f%%, darker on %.2f%% of light-facing pixels",
+        describe(split ? i.sideLight[1] : light_).c_str(), 100 * i.lastReference.meanAbs(),
+        100 * i.lastReference.lighterRate(), 100 * i.lastReference.darkerRate());
+    if (split) pcfText.insert(pcfText.find(':'), ", whole frame");
+  }
   std::string halves;  // in split screen, each half measured on its own
-  if (i.compareOn && !i.compareKey.empty()) {
+  if (split) {
     for (int side = 0; side < 2; ++side) {
       FloatImage r{w / 2, h, {}}, e{w / 2, h, {}};
       std::vector<glm::vec4> pos;
@@ -849,11 +894,17 @@ void Lab::measure(bool report) {
           r.pixels.push_back(rendered.pixels[k]), e.pixels.push_back(exact.pixels[k]), pos.push_back(positions[k]);
         }
       const VisibilityMetrics hm = compareVisibility(r, e, pos);
-      char line[200];
-      std::snprintf(line, sizeof line, "\n%s %s=%s: acne %.2f%%, leak %.2f%%, light in shadows %.2f%%",
-                    side ? "right" : "left ", i.compareKey.c_str(), (side ? i.compareB : i.compareA).c_str(),
-                    100 * hm.acneRate(), 100 * hm.leakRate(), 100 * hm.meanShadowLight());
-      halves += line;
+      halves += strf("\n%s %s=%s: acne %.2f%%, leak %.2f%%, light in shadows %.2f%%", side ? "right" : "left ",
+                     i.compareKey.c_str(), (side ? i.compareB : i.compareA).c_str(), 100 * hm.acneRate(),
+                     100 * hm.leakRate(), 100 * hm.meanShadowLight());
+      if (const auto* ref = referenceFor(side)) {
+        const ReferenceDifference d =
+            compareWithReference(rendered, *ref, side * (w - w / 2), side * (w - w / 2) + w / 2);
+        halves += strf("\n       against PCF %s: |difference| %.2f%%, lighter %.2f%%",
+                       describe(i.sideLight[side]).c_str(), 100 * d.meanAbs(), 100 * d.lighterRate());
+      } else {
+        halves += "\n       against PCF: n/a";
+      }
     }
   }
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -866,7 +917,7 @@ void Lab::measure(bool report) {
       100 * m.acneRate(), m.acnePixels, m.litPixels, 100 * m.leakRate(), m.leakPixels, m.shadowedPixels,
       gap < 0 ? "n/a" : std::to_string(gap).substr(0, std::to_string(gap).find('.') + 2).c_str(),
       100 * m.meanShadowLight(), ms);
-  i.measured = text + halves;
+  i.measured = text + ("\n" + pcfText) + halves;
   i.lastMetrics = m;
   i.lastGap = gap;
   if (!report) return;

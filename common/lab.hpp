@@ -41,6 +41,8 @@ struct LightView {
   glm::mat4 viewProj{1};  ///< world → light clip space
   GLuint depthMap = 0;    ///< the shadow map's depth texture (0 = none yet)
   int mapSize = 0;        ///< its size in texels
+  int kernel = 1;         ///< the prefilter's width (filtered maps): the footprint the PCF reference uses
+  bool gaussian = false;  ///< the prefilter's weights: Gaussian, or a box
 };
 
 /// Base class of every lab. Override the hooks; use the protected helpers.

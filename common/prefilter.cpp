@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "common/settings.hpp"
 #include "common/shader.hpp"
+#include "common/shadow_map.hpp"
 
 #include <algorithm>
 #include <cfloat>
@@ -19,6 +20,67 @@ double formatMax(GLenum format) {
     default:
       return double(FLT_MAX);
   }
+}
+
+void blurWeights(int kernel, bool gaussian, float weights[8]) {
+  const int radius = std::clamp(kernel / 2, 0, 7);
+  const float sigma = float(kernel) / 4.0f;
+  auto weight = [&](int i) { return gaussian ? std::exp(-float(i * i) / (2 * sigma * sigma)) : 1.0f; };
+  float total = 0;
+  for (int i = -radius; i <= radius; ++i) total += weight(i);
+  for (int i = 0; i < 8; ++i) weights[i] = i <= radius ? weight(i) / total : 0.0f;
+}
+
+std::vector<float> PcfReference::render(GLuint positions, int width, int height, GLuint depthMap, int mapSize,
+                                        const glm::mat4& lightViewProj, int kernel, bool gaussian, float biasTexels) {
+  if (!program_) {
+    program_ = std::make_unique<Program>(std::vector<ShaderStage>{{GL_VERTEX_SHADER, "wb/fullscreen.vert"},
+                                                                  {GL_FRAGMENT_SHADER, "wb/pcf_reference.frag"}});
+    GLuint id = 0;
+    glCreateVertexArrays(1, &id);
+    vao_ = VertexArray(id);
+    glCreateSamplers(1, &id);
+    sampler_ = Sampler(id);
+    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  }
+  GLint size[2] = {0, 0};
+  if (target_.id()) {
+    glGetTextureLevelParameteriv(target_.id(), 0, GL_TEXTURE_WIDTH, &size[0]);
+    glGetTextureLevelParameteriv(target_.id(), 0, GL_TEXTURE_HEIGHT, &size[1]);
+  }
+  if (size[0] != width || size[1] != height) {
+    target_ = makeTexture2D(GL_R32F, width, height);
+    fbo_ = makeFramebuffer({target_.id()}, 0);
+  }
+  // Depth changes by |grad z| per world unit; a 45° receiver changes one texel's width per texel.
+  const glm::vec3 depthRow(lightViewProj[0][2], lightViewProj[1][2], lightViewProj[2][2]);
+  const float texelWorld = texelWorldSize(lightViewProj, mapSize);
+  float weights[8];
+  blurWeights(kernel, gaussian, weights);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glViewport(0, 0, width, height);
+  glDisable(GL_DEPTH_TEST);
+  program_->use();
+  program_->set("u_positions", 0);
+  program_->set("u_depth", 1);
+  program_->set("u_lightViewProj", lightViewProj);
+  program_->set("u_bias", biasTexels * texelWorld * 0.5f * glm::length(depthRow));
+  program_->set("u_radius", kernel / 2);
+  glProgramUniform1fv(program_->id(), glGetUniformLocation(program_->id(), "u_weights"), 8, weights);
+  glBindTextureUnit(0, positions);
+  glBindTextureUnit(1, depthMap);
+  glBindSampler(1, sampler_.id());
+  glBindVertexArray(vao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindSampler(1, 0);
+  glEnable(GL_DEPTH_TEST);
+  std::vector<float> out(size_t(width) * size_t(height));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glReadPixels(0, 0, width, height, GL_RED, GL_FLOAT, out.data());
+  return out;
 }
 
 void PrefilterSettings::addTo(Settings& settings) {
@@ -78,12 +140,8 @@ void FilteredShadowMap::prefilter(const Program& blur) {
     glBindVertexArray(vao_.id());
     blur.use();
     const int radius = options_.kernel / 2;
-    const float sigma = float(options_.kernel) / 4.0f;
-    float weights[8] = {}, total = 0;
-    for (int i = -radius; i <= radius; ++i)
-      total += options_.gaussian ? std::exp(-float(i * i) / (2 * sigma * sigma)) : 1.0f;
-    for (int i = 0; i <= radius; ++i)
-      weights[i] = (options_.gaussian ? std::exp(-float(i * i) / (2 * sigma * sigma)) : 1.0f) / total;
+    float weights[8];
+    blurWeights(options_.kernel, options_.gaussian, weights);
     glProgramUniform1fv(blur.id(), glGetUniformLocation(blur.id(), "u_weights"), 8, weights);
     blur.set("u_radius", radius);
     blur.set("u_source", 0);

@@ -5,7 +5,10 @@
 #pragma once
 #include "common/gl.hpp"
 
+#include <glm/glm.hpp>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace wb {
 
@@ -60,6 +63,29 @@ class FilteredShadowMap {
   VertexArray vao_;
   int size_ = 0;
   PrefilterOptions options_;
+};
+
+/// The prefilter's normalised weights for taps 0..r of a kernel `kernel` texels wide (r = kernel / 2):
+/// Gaussian with sigma = kernel / 4, or a box.
+void blurWeights(int kernel, bool gaussian, float weights[8]);
+
+/// The reference the filtered techniques approximate: PCF over the same footprint as the prefilter
+/// (kernel × kernel weights, bilinear taps) from a plain depth map, for every pixel of a frame whose
+/// world positions are in `positions` (see shaders/wb/outputs.glsl). Pixels not facing the light
+/// get -1. Only for orthographic (directional) light maps: the bias is `biasTexels` texels of a
+/// 45° slope in depth units.
+class PcfReference {
+ public:
+  /// Renders the reference and reads it back (rows bottom to top).
+  std::vector<float> render(GLuint positions, int width, int height, GLuint depthMap, int mapSize,
+                            const glm::mat4& lightViewProj, int kernel, bool gaussian, float biasTexels = 1.5f);
+
+ private:
+  std::unique_ptr<Program> program_;
+  Texture target_;
+  Framebuffer fbo_;
+  VertexArray vao_;
+  Sampler sampler_;  // nearest, no comparison: the depth map may be set up for sampler2DShadow
 };
 
 /// The largest value a format can hold: FLT_MAX for 32-bit floats, 65504 for 16-bit ones.

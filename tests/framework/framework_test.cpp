@@ -2,6 +2,7 @@
 // exit code, never a crash; compiler errors name the original file and line; a broken shader edit
 // keeps the last good program.
 #include "common/ground_truth.hpp"
+#include "common/prefilter.hpp"
 #include "common/scene.hpp"
 #include "common/settings.hpp"
 #include "common/shader.hpp"
@@ -249,4 +250,52 @@ TEST(GroundTruth, TheSolutionsAcneAndLeaksFollowTheBias) {
   EXPECT_GT(none.first, 20.0) << "no bias should give heavy acne";
   EXPECT_LT(normal.first, 1.0) << "the default bias should remove nearly all acne";
   EXPECT_GT(large.second, normal.second) << "a large bias should leak more light";
+}
+
+// The PCF reference of the filtered labs on a step: occluders (depth 0.3) over the left half of a
+// 64² map, nothing over the right, a receiver plane at depth 0.5 seen by 256 pixels across. Far from
+// the edge it is 0 or 1; it rises monotonically; it is symmetric about the edge; and it rises over
+// the footprint's width, between K and K + 1 texels (K box taps, each a bilinear blend).
+TEST_F(GlTest, PcfReferenceFiltersAStepOverTheFootprint) {
+  constexpr int kMap = 64, kPixels = 256;
+  wb::Texture depth = wb::makeTexture2D(GL_DEPTH_COMPONENT32F, kMap, kMap);
+  std::vector<float> texels(kMap * kMap);
+  for (int k = 0; k < kMap * kMap; ++k) texels[size_t(k)] = k % kMap < kMap / 2 ? 0.3f : 1.0f;
+  glTextureSubImage2D(depth.id(), 0, 0, 0, kMap, kMap, GL_DEPTH_COMPONENT, GL_FLOAT, texels.data());
+  std::vector<glm::vec4> world;  // world = light clip space: x across the map, depth 0.5
+  for (int p = 0; p < kPixels; ++p) world.emplace_back(-1.0f + 2.0f * (float(p) + 0.5f) / kPixels, 0.0f, 0.0f, 1.0f);
+  world.back().w = -1;  // facing away: not compared
+  wb::Texture positions = wb::makeTexture2D(GL_RGBA32F, kPixels, 1);
+  glTextureSubImage2D(positions.id(), 0, 0, 0, kPixels, 1, GL_RGBA, GL_FLOAT, world.data());
+  wb::PcfReference reference;
+  for (int kernel : {1, 3, 5, 7}) {
+    const std::vector<float> v =
+        reference.render(positions.id(), kPixels, 1, depth.id(), kMap, glm::mat4(1), kernel, false);
+    EXPECT_EQ(v.back(), -1.0f);
+    EXPECT_EQ(v[0], 0.0f) << "kernel " << kernel;
+    EXPECT_NEAR(v[kPixels - 2], 1.0f, 1e-5f) << "kernel " << kernel;
+    int ramp = 0;
+    for (int p = 1; p < kPixels - 1; ++p) {
+      EXPECT_GE(v[size_t(p)], v[size_t(p) - 1] - 1e-6f) << "kernel " << kernel << ", pixel " << p;
+      ramp += v[size_t(p)] > 0.01f && v[size_t(p)] < 0.99f;
+    }
+    for (int d = 0; d < 40; ++d)  // pixels 127 - d and 128 + d lie as far left and right of the edge
+      EXPECT_NEAR(v[size_t(127 - d)] + v[size_t(128 + d)], 1.0f, 1e-4f) << "kernel " << kernel << ", offset " << d;
+    const float texels = float(ramp) * kMap / kPixels;
+    EXPECT_GE(texels, float(kernel)) << "kernel " << kernel;
+    EXPECT_LE(texels, float(kernel + 1)) << "kernel " << kernel;
+  }
+}
+
+// Against a reference: light-facing pixels only, lighter or darker by more than 0.1, in a column range.
+TEST(GroundTruth, ReferenceDifferenceCountsLighterAndDarker) {
+  const wb::FloatImage rendered{5, 1, {0.5f, 0.9f, 0.2f, 1.0f, 0.0f}};
+  const std::vector<float> reference{0.5f, 0.5f, 0.5f, -1.0f, 0.05f};
+  const wb::ReferenceDifference d = wb::compareWithReference(rendered, reference, 0, 5);
+  EXPECT_EQ(d.pixels, 4);
+  EXPECT_EQ(d.lighter, 1);
+  EXPECT_EQ(d.darker, 1);
+  EXPECT_NEAR(d.meanAbs(), (0 + 0.4 + 0.3 + 0.05) / 4, 1e-6);
+  EXPECT_EQ(wb::compareWithReference(rendered, reference, 1, 2).lighter, 1);
+  EXPECT_EQ(wb::compareWithReference(rendered, reference, 2, 5).lighter, 0);
 }
