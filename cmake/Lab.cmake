@@ -2,6 +2,10 @@
 # and the mutants that test the tests. Nothing here is specific to one lab.
 set(WB_WARNINGS -Wall -Wextra)
 option(WB_EXPECT_STUBS "Student tests pass only when they report NOT IMPLEMENTED (the state of the repo)" OFF)
+# The grader's build (tools/grade.py) sets WB_GRADE_DIR to a folder laid out like the repository
+# that holds one submission's exercise files (labs/NN_name/exercise.cpp, .../shaders/exercise.glsl):
+# each lab then also gets labNN_submission and labNN_submission_tests, built from those files.
+set(WB_GRADE_DIR "" CACHE PATH "a submission's exercise files, for tools/grade.py")
 
 # One build of a lab from one set of exercise files: labNN<suffix> and labNN<suffix>_tests.
 function(_wb_lab_variant lab nn variant suffix exercise_dir)
@@ -166,7 +170,9 @@ function(add_lab lab)
   target_include_directories(lab${nn}_app_obj PRIVATE ${lab_dir})
   target_link_libraries(lab${nn}_app_obj PUBLIC wb_common)
   target_compile_options(lab${nn}_app_obj PRIVATE ${WB_WARNINGS})
-  file(GLOB test_sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tests/${lab}/*.cpp)
+  # Held-out tests (tests/hidden/NN_name, never exported) join the lab's tests where they exist.
+  file(GLOB test_sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tests/${lab}/*.cpp
+                                           ${PROJECT_SOURCE_DIR}/tests/hidden/${lab}/*.cpp)
   add_library(lab${nn}_test_obj OBJECT ${test_sources})
   target_include_directories(lab${nn}_test_obj PRIVATE ${lab_dir})
   target_link_libraries(lab${nn}_test_obj PUBLIC wb_testing)
@@ -174,6 +180,9 @@ function(add_lab lab)
 
   _wb_lab_variant(${lab} ${nn} student "" ${lab_dir})
   _wb_register_tests(${lab} ${nn} student lab${nn}_tests "${ids}")
+  if(WB_GRADE_DIR)  # built and run only by the grader, never registered with ctest
+    _wb_lab_variant(${lab} ${nn} submission "_submission" ${WB_GRADE_DIR}/labs/${lab})
+  endif()
   if(EXISTS ${PROJECT_SOURCE_DIR}/solutions/${lab})
     _wb_lab_variant(${lab} ${nn} solution "_solution" ${PROJECT_SOURCE_DIR}/solutions/${lab})
     _wb_register_tests(${lab} ${nn} solution lab${nn}_solution_tests "${ids}")

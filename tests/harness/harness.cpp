@@ -49,7 +49,11 @@ std::vector<uint8_t> diffImage(const FloatImage& ref, const FloatImage& got, flo
 
 std::vector<std::string> labArgs(const std::vector<std::string>& settings, const std::string& scene) {
   std::vector<std::string> args;
-  if (!scene.empty()) args = {"--scene", (fs::path(variant::kSourceDir) / "scenes" / scene).string()};
+  const fs::path root(variant::kSourceDir);
+  if (scene.rfind("hidden/", 0) == 0)
+    args = {"--scene", (root / "tests/hidden" / variant::kLab / "scenes" / scene.substr(7)).string()};
+  else if (!scene.empty())
+    args = {"--scene", (root / "scenes" / scene).string()};
   for (const auto& s : settings) args.insert(args.end(), {"--set", s});
   return args;
 }
@@ -151,7 +155,11 @@ SceneMetrics measureScene(const std::string& id, const std::string& name, const 
 void expectSceneMatchesGolden(const std::string& id, const std::string& name, const std::vector<std::string>& args,
                               float tolerance, double maxFailingFraction) {
   const fs::path out = fs::path(variant::kOutputDir) / ("Ex" + id + "_" + name);
-  const fs::path golden = fs::path(variant::kSourceDir) / "tests/golden" / variant::kLab / (name + ".pfm");
+  // Held-out scenes ("hidden/NAME") keep their golden data in the instructor-only tests/hidden/NN_name/golden.
+  const bool hidden = name.rfind("hidden/", 0) == 0;
+  const fs::path golden = hidden ? fs::path(variant::kSourceDir) / "tests/hidden" / variant::kLab / "golden" /
+                                       (name.substr(7) + ".pfm")
+                                 : fs::path(variant::kSourceDir) / "tests/golden" / variant::kLab / (name + ".pfm");
   const fs::path pfm = out / "result.pfm";
   std::vector<std::string> all = {"--size", "256x256", "--dump-visibility", pfm.string()};
   all.insert(all.end(), args.begin(), args.end());

@@ -56,7 +56,8 @@ std::vector<glm::vec4> runExercise(const std::string& id, const std::string& bod
     if (r.x <= -1e29f || r.y <= -1e29f || r.z <= -1e29f || r.w <= -1e29f) \
       FAIL() << "NOT IMPLEMENTED: the GLSL function still returns WB_TODO";
 
-/// Lab arguments for a scene test: `--set` for each "key=value", and `--scene scenes/<scene>` when given.
+/// Lab arguments for a scene test: `--set` for each "key=value", and `--scene scenes/<scene>` when given
+/// (a held-out scene, "hidden/NAME.json", is read from the instructor-only tests/hidden/<lab>/scenes).
 std::vector<std::string> labArgs(const std::vector<std::string>& settings, const std::string& scene = "");
 
 /// Runs the lab headless for exercise `id` (isolated as in expectSceneMatchesGolden()) with `args`
@@ -76,7 +77,8 @@ struct SceneMetrics {
 SceneMetrics measureScene(const std::string& id, const std::string& name, const std::vector<std::string>& args);
 
 /// Layer 2: renders a golden case with the lab itself (`--headless --size 256x256` plus `args`),
-/// with exercise `id` isolated, and compares its visibility with tests/golden/<lab>/<name>.pfm.
+/// with exercise `id` isolated, and compares its visibility with tests/golden/<lab>/<name>.pfm (a
+/// held-out case, `name` = "hidden/NAME", with tests/hidden/<lab>/golden/NAME.pfm).
 /// A pixel fails when no reference pixel in its 3x3 neighbourhood is within `tolerance`; the test fails when more than
 /// `maxFailingFraction` of pixels fail. On failure it writes reference, result and diff PNGs.
 void expectSceneMatchesGolden(const std::string& id, const std::string& name, const std::vector<std::string>& args,
