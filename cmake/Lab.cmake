@@ -40,15 +40,17 @@ const char* const kOutputDir = \"${CMAKE_BINARY_DIR}/test-output/${app}\";
   if(EXISTS ${exercise_dir}/exercise.cpp)
     set(exercise_cpp ${exercise_dir}/exercise.cpp)
   endif()
-  add_executable(${app} ${exercise_cpp} ${variant_cpp})
-  target_include_directories(${app} PRIVATE ${lab_dir})
-  target_link_libraries(${app} PRIVATE lab${nn}_app_obj wb_common)
-  target_compile_options(${app} PRIVATE ${WB_WARNINGS})
+  # The exercise files are compiled once for the app and its tests (a submission costs one compile).
+  add_library(${app}_exercise OBJECT ${exercise_cpp} ${variant_cpp})
+  target_include_directories(${app}_exercise PRIVATE ${lab_dir})
+  target_link_libraries(${app}_exercise PRIVATE wb_common)
+  target_compile_options(${app}_exercise PRIVATE ${WB_WARNINGS})
 
-  add_executable(${app}_tests ${exercise_cpp} ${variant_cpp})
-  target_include_directories(${app}_tests PRIVATE ${lab_dir})
+  add_executable(${app} $<TARGET_OBJECTS:${app}_exercise>)
+  target_link_libraries(${app} PRIVATE lab${nn}_app_obj wb_common)
+
+  add_executable(${app}_tests $<TARGET_OBJECTS:${app}_exercise>)
   target_link_libraries(${app}_tests PRIVATE lab${nn}_test_obj wb_testing_main wb_testing)
-  target_compile_options(${app}_tests PRIVATE ${WB_WARNINGS})
   add_dependencies(${app}_tests ${app})  # scene tests run the lab itself
   if(solution_dir AND NOT variant STREQUAL "solution")
     add_dependencies(${app}_tests lab${nn}_solution)  # and the solution, for isolated GLSL exercises

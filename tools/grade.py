@@ -1,0 +1,638 @@
+#!/usr/bin/python3
+"""Grades student submissions of the Shadow Lab Workbook: ./workbook grade (see docs/instructors.md).
+
+A submission is a folder or an archive (.zip, .tar, .tar.gz, .tgz) holding a student's copy of the
+workbook, or just its labs/ folder. Only the exercise files that labs/*/exercises.json names are
+taken from it; they are laid over this (instructor) tree in a grading build that has the framework
+prebuilt, so a submission costs one compile per lab. Each exercise's tests run in their own process
+with a time limit, without network, and as an unprivileged user when the grader runs as root.
+
+Outputs per submission (in --out): results.json (Gradescope, rewritten after every exercise so a
+crash mid-way leaves a valid file), junit.xml, report.md and report.html with the reference, result
+and diff images of failed scene tests. With --batch: one such folder per student, gradebook.csv and
+summary.md.
+"""
+import argparse
+import concurrent.futures
+import csv
+import html
+import json
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import tarfile
+import tempfile
+import threading
+import time
+import zipfile
+from pathlib import Path
+from xml.sax.saxutils import escape, quoteattr
+
+ROOT = Path(__file__).resolve().parent.parent
+NOBODY = 65534
+MAX_FILE_BYTES = 1 << 20  # a larger "exercise file" is not source code
+
+
+def log(msg):
+    print(msg, file=sys.stderr, flush=True)
+
+
+# --- The manifests --------------------------------------------------------------------------------
+def load_labs(only=None):
+    """Every lab with its exercises (id, title, file, points, extension) and its held-out tests."""
+    labs = []
+    for manifest in sorted((ROOT / "labs").glob("*/exercises.json")):
+        data = json.loads(manifest.read_text())
+        lab = manifest.parent.name
+        if only and lab[:2] not in only:
+            continue
+        hidden_file = ROOT / "tests/hidden" / lab / "hidden.json"
+        hidden = json.loads(hidden_file.read_text()) if hidden_file.exists() else {"points": {}}
+        labs.append({"name": lab, "nn": lab[:2], "title": data.get("title", lab), "exercises": data["exercises"],
+                     "hidden_points": hidden.get("points", {}),
+                     "hidden_visibility": hidden.get("visibility", "after_due_date")})
+    if not labs:
+        raise SystemExit("grade: no labs found" + (f" for --labs {','.join(only)}" if only else ""))
+    return labs
+
+
+def student_files(lab):
+    """The whitelisted files of a lab, relative to labs/NN_name."""
+    return sorted({e["file"] for e in lab["exercises"]})
+
+
+# --- Submissions ----------------------------------------------------------------------------------
+def unpack(submission, scratch):
+    """A folder to read the submission from (archives are extracted safely into scratch)."""
+    path = Path(submission)
+    if path.is_dir():
+        return path
+    if not path.exists():
+        raise ValueError(f"no such submission: {path}")
+    dest = Path(tempfile.mkdtemp(prefix="submission-", dir=scratch))
+    if zipfile.is_zipfile(path):
+        with zipfile.ZipFile(path) as z:
+            for info in z.infolist():
+                target = (dest / info.filename).resolve()
+                if not str(target).startswith(str(dest.resolve())) or info.file_size > 64 * MAX_FILE_BYTES:
+                    continue  # a path outside the folder, or a huge member: ignored
+                z.extract(info, dest)
+    elif tarfile.is_tarfile(path):
+        with tarfile.open(path) as t:
+            members = [m for m in t.getmembers() if (m.isfile() or m.isdir()) and not m.name.startswith("/")
+                       and ".." not in Path(m.name).parts and m.size <= 64 * MAX_FILE_BYTES]
+            t.extractall(dest, members=members)
+    else:
+        raise ValueError(f"{path} is neither a folder nor a .zip/.tar archive")
+    return dest
+
+
+def find_student_file(folder, lab, rel):
+    """The submission's copy of labs/<lab>/<rel>: at that path under the folder or under one level of
+    nesting (an archive with a top folder), else the only file whose path ends with <lab>/<rel>."""
+    for base in [folder] + [d for d in folder.iterdir() if d.is_dir()]:
+        candidate = base / "labs" / lab / rel
+        if candidate.is_file():
+            return candidate
+    matches = [p for p in folder.rglob(Path(rel).name) if p.as_posix().endswith(f"{lab}/{rel}") and p.is_file()]
+    return matches[0] if len(matches) == 1 else None
+
+
+# --- The sandbox ----------------------------------------------------------------------------------
+class Sandbox:
+    """Runs a command in its own process group with a time limit, without network (a new network
+    namespace) and, when the grader is root, as the unprivileged user nobody."""
+
+    def __init__(self):
+        self.prefix, self.notes = [], []
+        root = os.geteuid() == 0
+        if root and shutil.which("setpriv"):
+            self.prefix = ["setpriv", f"--reuid={NOBODY}", f"--regid={NOBODY}", "--clear-groups", "--"]
+        elif root:
+            self.notes.append("setpriv is missing: tests run as root")
+        net = ["unshare", "--net", "--"] if root else ["unshare", "--net", "--map-current-user", "--"]
+        if shutil.which("unshare") and subprocess.run(net + ["true"], capture_output=True).returncode == 0:
+            self.prefix = net + self.prefix
+        else:
+            self.notes.append("network namespaces are not available here: tests run with the network")
+        if root and "setpriv" in self.prefix and subprocess.run(
+                self.prefix + ["test", "-r", str(ROOT / "CMakeLists.txt")], capture_output=True).returncode != 0:
+            self.prefix = self.prefix[:self.prefix.index("setpriv")]
+            self.notes.append(f"the user nobody cannot read {ROOT}: tests run as root (make the path "
+                              "world-readable to drop privileges)")
+        self.user = "nobody" if "setpriv" in self.prefix else "the grader's user"
+
+    def run(self, cmd, timeout, cwd=None, env=None):
+        """(exit code or -signal, output, timed_out)."""
+        proc = subprocess.Popen(self.prefix + cmd, cwd=cwd, env=env, stdout=subprocess.PIPE,
+                                stderr=subprocess.STDOUT, start_new_session=True)
+        try:
+            out, _ = proc.communicate(timeout=timeout)
+            return proc.returncode, out.decode(errors="replace"), False
+        except subprocess.TimeoutExpired:
+            kill_session(proc.pid)  # the test binary and any lab it started (timeout(1) makes its own group)
+            out, _ = proc.communicate()
+            return -signal.SIGKILL, out.decode(errors="replace"), True
+
+
+def kill_session(sid):
+    """Kills every process of session `sid` (a process group is not enough: timeout(1) leaves it)."""
+    for _ in range(10):
+        found = False
+        for stat in Path("/proc").glob("[0-9]*/stat"):
+            try:
+                fields = stat.read_text().rsplit(")", 1)[1].split()
+                if int(fields[3]) == sid:
+                    os.kill(int(stat.parent.name), signal.SIGKILL)
+                    found = True
+            except (OSError, IndexError, ValueError):
+                pass
+        if not found:
+            return
+        time.sleep(0.1)
+
+
+# --- The grading build ----------------------------------------------------------------------------
+class Workspace:
+    """One prebuilt grading tree: build-grade/wK with the submission's files in build-grade/wK/submission."""
+
+    def __init__(self, index, labs, base):
+        self.dir = base / f"w{index}"
+        self.submission = self.dir / "submission"
+        self.build = self.dir / "build"
+        self.labs = labs
+
+    def reset_to_stubs(self):
+        for lab in load_labs():  # every lab, so the build is configured the same whatever --labs says
+            for rel in student_files(lab):
+                self.place(lab["name"], rel, (ROOT / "labs" / lab["name"] / rel).read_bytes())
+
+    def place(self, lab, rel, content):
+        """Writes a file only when its content changes, so make rebuilds only what changed."""
+        target = self.submission / "labs" / lab / rel
+        if target.exists() and target.read_bytes() == content:
+            return
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_bytes(content)
+
+    def prepare(self, jobs):
+        """Configures and builds the framework, the solution apps and the submission variant (stubs)."""
+        self.reset_to_stubs()
+        t0 = time.time()
+        if not (self.build / "CMakeCache.txt").exists():
+            run_checked(["cmake", "-S", str(ROOT), "-B", str(self.build), "-DCMAKE_BUILD_TYPE=RelWithDebInfo",
+                         f"-DWB_GRADE_DIR={self.submission}"], "configure the grading build")
+        targets = []
+        for lab in self.labs:
+            nn = lab["nn"]
+            targets += [f"lab{nn}_solution", f"lab{nn}_submission", f"lab{nn}_submission_tests"]
+        run_checked(["cmake", "--build", str(self.build), "-j", str(jobs), "--target"] + targets,
+                    "build the grading framework")
+        return time.time() - t0
+
+    def make_readable(self):
+        """The sandboxed tests run as nobody: they read the build and write test-output/."""
+        out = self.build / "test-output"
+        out.mkdir(exist_ok=True)
+        for p in [out] + list(out.rglob("*")):
+            try:
+                os.chmod(p, 0o777 if p.is_dir() else 0o666)
+            except OSError:
+                pass
+
+
+def run_checked(cmd, what):
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    if r.returncode != 0:
+        raise SystemExit(f"grade: could not {what}:\n{r.stdout[-3000:]}{r.stderr[-3000:]}")
+
+
+# --- Exercise chunks (as in common/glsl_harness.cpp) ----------------------------------------------
+def chunk(text, ex_id):
+    marker = f"// EXERCISE {ex_id}"
+    begin = text.find(marker)
+    if begin < 0:
+        return None
+    begin = text.rfind("\n", 0, begin) + 1
+    end = text.find("// EXERCISE ", begin + len(marker))
+    end = len(text) if end < 0 else text.rfind("\n", 0, end) + 1
+    return begin, end
+
+
+def with_chunk(base, donor, ex_id):
+    """`base` with the chunk of `ex_id` taken from `donor` (None if either lacks the marker)."""
+    b, d = chunk(base, ex_id), chunk(donor, ex_id)
+    if not b or not d:
+        return None
+    line = donor.count("\n", 0, d[0]) + 1
+    after = base.count("\n", 0, b[1]) + 1
+    return base[:b[0]] + f"#line {line}\n" + donor[d[0]:d[1]] + f"#line {after}\n" + base[b[1]:]
+
+
+def compiler_errors(output, limit=12):
+    lines = [l for l in output.splitlines() if re.search(r"error|Error|undefined reference", l)]
+    keep = lines[:limit] or output.strip().splitlines()[-limit:]
+    return "\n".join(l[:300] for l in keep)
+
+
+# --- Grading one submission -----------------------------------------------------------------------
+class Grader:
+    def __init__(self, ws, labs, sandbox, timeout):
+        self.ws, self.labs, self.sandbox, self.timeout = ws, labs, sandbox, timeout
+
+    def build_lab(self, lab):
+        nn = lab["nn"]
+        r = subprocess.run(["cmake", "--build", str(self.ws.build), "--target", f"lab{nn}_submission",
+                            f"lab{nn}_submission_tests"], capture_output=True, text=True, timeout=600)
+        return r.returncode == 0, r.stdout + r.stderr
+
+    def compile_lab(self, lab, files):
+        """Builds the lab from the student's files. When exercise.cpp does not compile, each C++
+        exercise is tried alone in the solution's file, so an error costs only the exercises it is
+        in. Returns {exercise id: compiler message} for the exercises that cannot be graded."""
+        for rel, content in files.items():
+            self.ws.place(lab["name"], rel, content)
+        ok, out = self.build_lab(lab)
+        if ok:
+            return {}
+        cpp_ids = [e["id"] for e in lab["exercises"] if e["file"] == "exercise.cpp"]
+        solution = ROOT / "solutions" / lab["name"] / "exercise.cpp"
+        mine = files.get("exercise.cpp", b"").decode(errors="replace")
+        failed, good = {}, {}
+        if "exercise.cpp" not in files or not solution.exists():
+            return {i: compiler_errors(out) for i in cpp_ids} or {e["id"]: compiler_errors(out) for e in lab["exercises"]}
+        base = solution.read_text()
+        for ex_id in cpp_ids:
+            hybrid = with_chunk(base, mine, ex_id)
+            if hybrid is None:
+                failed[ex_id] = f"the file has no '// EXERCISE {ex_id}' marker any more; keep the markers"
+                continue
+            self.ws.place(lab["name"], "exercise.cpp", hybrid.encode())
+            ok, out1 = self.build_lab(lab)
+            if ok:
+                good[ex_id] = True
+            else:
+                failed[ex_id] = compiler_errors(out1)
+        combined = base
+        for ex_id in good:
+            combined = with_chunk(combined, mine, ex_id)
+        self.ws.place(lab["name"], "exercise.cpp", combined.encode())
+        ok, out2 = self.build_lab(lab)
+        if not ok:  # the parts compile alone but not together: nothing C++ can be graded
+            self.ws.place(lab["name"], "exercise.cpp", base.encode())
+            ok, _ = self.build_lab(lab)
+            failed.update({i: compiler_errors(out2) for i in good})
+        if not ok:
+            return {e["id"]: compiler_errors(out) for e in lab["exercises"]}
+        return failed
+
+    def list_tests(self, lab):
+        exe = self.ws.build / f"lab{lab['nn']}_submission_tests"
+        code, out, _ = self.sandbox.run([str(exe), "--gtest_list_tests"], 60, cwd=self.ws.build / "test-output")
+        tests, suite = [], ""
+        for line in out.splitlines():
+            if line and not line.startswith(" "):
+                suite = line.split()[0]
+            elif line.strip():
+                tests.append(suite + line.split()[0])
+        return tests
+
+    def run_tests(self, lab, gfilter, tag):
+        """Runs one exercise's tests in the sandbox: (passed, failures [(test, message)], note)."""
+        exe = self.ws.build / f"lab{lab['nn']}_submission_tests"
+        report = self.ws.build / "test-output" / f"{tag}.json"
+        if report.exists():
+            report.unlink()
+        env = dict(os.environ, HOME="/tmp", WB_STRICT_GL="1")
+        code, out, timed_out = self.sandbox.run(
+            [str(exe), f"--gtest_filter={gfilter}", f"--gtest_output=json:{report}"], self.timeout, env=env,
+            cwd=report.parent)
+        running = re.findall(r"\[ RUN      \] (\S+)", out)
+        if timed_out:
+            return False, [(running[-1] if running else "", f"ERROR: timed out after {self.timeout} s (an endless "
+                            "loop in C++ or in a shader?); the process was killed")], out
+        if code < 0 or not report.exists():
+            sig = -code if code < 0 else code - 128 if code > 128 else 0
+            name = signal.Signals(sig).name if sig in signal.Signals._value2member_map_ else f"exit {code}"
+            tail = "\n".join(out.strip().splitlines()[-8:])
+            return False, [(running[-1] if running else "", f"ERROR: the tests crashed ({name}) in "
+                            f"{running[-1] if running else 'start-up'}:\n{tail}")], out
+        data = json.loads(report.read_text())
+        failures, count = [], 0
+        for suite in data.get("testsuites", []):
+            for t in suite.get("testsuite", []):
+                count += 1
+                for f in t.get("failures", []):
+                    failures.append((f"{suite['name']}.{t['name']}", f["failure"]))
+        if count == 0:
+            return False, [("", "ERROR: no tests ran")], out
+        return not failures, failures, out
+
+    def grade(self, submission, out_dir, name):
+        t0 = time.time()
+        out_dir.mkdir(parents=True, exist_ok=True)
+        images = out_dir / "images"
+        results = Results(out_dir, name, self.labs, self.sandbox)
+        with tempfile.TemporaryDirectory(prefix="grade-") as scratch:
+            try:
+                folder = unpack(submission, scratch)
+            except (ValueError, OSError, zipfile.BadZipFile, tarfile.TarError) as e:
+                results.fail_all(f"ERROR: the submission could not be read: {e}")
+                return results.finish(time.time() - t0)
+            self.ws.reset_to_stubs()
+            for lab in self.labs:
+                files, notes = {}, []
+                for rel in student_files(lab):
+                    found = find_student_file(folder, lab["name"], rel)
+                    if found is None:
+                        notes.append(f"labs/{lab['name']}/{rel} is not in the submission: the stub is graded")
+                    elif found.stat().st_size > MAX_FILE_BYTES:
+                        notes.append(f"labs/{lab['name']}/{rel} is over 1 MiB: the stub is graded")
+                    else:
+                        files[rel] = found.read_bytes()
+                try:
+                    broken = self.compile_lab(lab, files)
+                except subprocess.TimeoutExpired:
+                    broken = {e["id"]: "ERROR: the build timed out" for e in lab["exercises"]}
+                self.ws.make_readable()
+                tests = self.list_tests(lab)
+                for e in lab["exercises"]:
+                    ex_id, tag = e["id"], e["id"].replace(".", "_")
+                    mine = [t for t in tests if f".Ex{tag}_" in t]
+                    hidden = [t for t in mine if t.startswith("Hidden")]
+                    if ex_id in broken:
+                        msg = broken[ex_id]
+                        msg = msg if msg.startswith("ERROR") else f"ERROR: does not compile:\n{msg}"
+                        results.add(lab, e, False, [("", msg)], [], notes, hidden=bool(hidden))
+                        continue
+                    ok, failures, _ = self.run_tests(lab, f"*.Ex{tag}_*-Hidden*.*", f"{tag}_visible")
+                    hidden_result = None
+                    if hidden:
+                        hidden_result = self.run_tests(lab, f"Hidden*.Ex{tag}_*", f"{tag}_hidden")
+                    kept = copy_images(failures + (hidden_result[1] if hidden_result else []), images, tag)
+                    results.add(lab, e, ok, failures, kept, notes, hidden_result=hidden_result, hidden=bool(hidden))
+        return results.finish(time.time() - t0)
+
+
+def copy_images(failures, images, tag):
+    kept = []
+    for test, msg in failures:
+        for label, path in re.findall(r"(diff|reference|result): (\S+\.png)", msg):
+            src = Path(path)
+            if src.exists():
+                images.mkdir(parents=True, exist_ok=True)
+                dest = images / f"{tag}_{src.parent.name}_{label}.png"
+                shutil.copyfile(src, dest)
+                kept.append((test, label, dest.name))
+    return kept
+
+
+# --- Results: results.json, junit.xml, report.md, report.html -------------------------------------
+def first_line(msg):
+    for line in msg.splitlines():
+        if line.strip():
+            return line.strip()
+    return ""
+
+
+def status_of(failures):
+    text = " ".join(m for _, m in failures)
+    return ("error" if "ERROR" in text else "wrong" if "WRONG" in text
+            else "not implemented" if "NOT IMPLEMENTED" in text else "wrong")
+
+
+class Results:
+    def __init__(self, out_dir, name, labs, sandbox):
+        self.out, self.name, self.labs, self.sandbox = out_dir, name, labs, sandbox
+        self.entries = []  # one per exercise (and one per exercise's held-out tests)
+        self.max_score = sum(e["points"] for l in labs for e in l["exercises"] if not e.get("extension"))
+        self.write_json(partial=True)
+
+    def fail_all(self, message):
+        for lab in self.labs:
+            for e in lab["exercises"]:
+                self.add(lab, e, False, [("", message)], [], [])
+
+    def add(self, lab, e, ok, failures, images, notes, hidden_result=None, hidden=False):
+        hidden_points = lab["hidden_points"].get(e["id"], 0) if hidden else 0
+        visible_points = e["points"] - hidden_points
+        bonus = " (extension: bonus points)" if e.get("extension") else ""
+        entry = {"lab": lab["name"], "id": e["id"], "title": e["title"] + bonus, "points": visible_points,
+                 "score": visible_points if ok else 0, "ok": ok, "failures": failures, "images": images,
+                 "notes": notes, "visibility": "visible", "extension": bool(e.get("extension")),
+                 "status": "done" if ok else status_of(failures)}
+        self.entries.append(entry)
+        if hidden:
+            h_ok, h_failures = (hidden_result[0], hidden_result[1]) if hidden_result else (False, failures)
+            self.entries.append({"lab": lab["name"], "id": e["id"], "title": e["title"] + " (held-out tests)",
+                                 "points": hidden_points, "score": hidden_points if h_ok else 0, "ok": h_ok,
+                                 "failures": h_failures, "images": [], "notes": [], "extension": False,
+                                 "visibility": lab["hidden_visibility"],
+                                 "status": "done" if h_ok else status_of(h_failures)})
+        self.write_json(partial=True)
+
+    def score(self):
+        return sum(x["score"] for x in self.entries)
+
+    def entry_output(self, x):
+        lines = [f"**{x['status']}**"] + [f"- {n}" for n in x["notes"]]
+        for test, msg in x["failures"][:5]:
+            lines.append(f"\n`{test}`\n```\n{msg.strip()[:2000]}\n```" if test else f"\n```\n{msg.strip()[:2000]}\n```")
+        return "\n".join(lines)
+
+    def write_json(self, partial, elapsed=0.0):
+        tests = [{"name": f"{x['id']} {x['title']}", "number": x["id"], "score": x["score"],
+                  "max_score": 0 if x["extension"] else x["points"], "status": "passed" if x["ok"] else "failed",
+                  "output": self.entry_output(x), "output_format": "md", "visibility": x["visibility"]}
+                 for x in self.entries]
+        done = len({(x["lab"], x["id"]) for x in self.entries})
+        total = sum(len(l["exercises"]) for l in self.labs)
+        summary = (f"Graded {done} of {total} exercises so far (grading stopped or is still running)." if partial
+                   else f"{self.score()} of {self.max_score} points.")
+        doc = {"score": self.score(), "max_score": self.max_score, "output": summary, "output_format": "md",
+               "visibility": "visible", "stdout_visibility": "hidden", "tests": tests}
+        if not partial:
+            doc["execution_time"] = round(elapsed, 1)
+        tmp = self.out / "results.json.tmp"
+        tmp.write_text(json.dumps(doc, indent=2))
+        os.replace(tmp, self.out / "results.json")  # always a whole, valid file
+
+    def finish(self, elapsed):
+        self.write_json(partial=False, elapsed=elapsed)
+        self.write_junit(elapsed)
+        self.write_reports(elapsed)
+        return {"name": self.name, "score": self.score(), "max_score": self.max_score, "entries": self.entries,
+                "seconds": elapsed}
+
+    def write_junit(self, elapsed):
+        parts = ['<?xml version="1.0" encoding="UTF-8"?>',
+                 f'<testsuites name={quoteattr(self.name)} tests="{len(self.entries)}" '
+                 f'failures="{sum(not x["ok"] for x in self.entries)}" time="{elapsed:.1f}">']
+        for lab in self.labs:
+            mine = [x for x in self.entries if x["lab"] == lab["name"]]
+            parts.append(f'  <testsuite name="lab{lab["nn"]}" tests="{len(mine)}" '
+                         f'failures="{sum(not x["ok"] for x in mine)}">')
+            for x in mine:
+                parts.append(f'    <testcase classname="lab{lab["nn"]}" name={quoteattr(x["id"] + " " + x["title"])}>')
+                if not x["ok"]:
+                    text = "\n\n".join(f"{t}\n{m}" for t, m in x["failures"])
+                    parts.append(f'      <failure message={quoteattr(first_line(text) or x["status"])}>'
+                                 f'{escape(text[:8000])}</failure>')
+                parts.append("    </testcase>")
+            parts.append("  </testsuite>")
+        parts.append("</testsuites>")
+        (self.out / "junit.xml").write_text("\n".join(parts) + "\n")
+
+    def write_reports(self, elapsed):
+        md = [f"# Grading report: {self.name}", "",
+              f"**{self.score()} of {self.max_score} points** (graded in {elapsed:.0f} s; tests ran as "
+              f"{self.sandbox.user}, each exercise in its own process)."]
+        md += [f"- note: {n}" for n in self.sandbox.notes]
+        body = [f"<h1>Grading report: {html.escape(self.name)}</h1>",
+                f"<p><b>{self.score()} of {self.max_score} points</b> (graded in {elapsed:.0f} s)</p>"]
+        for lab in self.labs:
+            mine = [x for x in self.entries if x["lab"] == lab["name"]]
+            md += ["", f"## Lab {lab['nn']}: {lab['title']}", "", "| exercise | status | points |", "|---|---|---|"]
+            md += [f"| {x['id']} {x['title']} | {x['status']} | {x['score']} / {x['points']} |" for x in mine]
+            body.append(f"<h2>Lab {lab['nn']}: {html.escape(lab['title'])}</h2><table border=1 cellpadding=4>"
+                        "<tr><th>exercise</th><th>status</th><th>points</th></tr>")
+            body += [f"<tr><td>{x['id']} {html.escape(x['title'])}</td><td>{x['status']}</td>"
+                     f"<td>{x['score']} / {x['points']}</td></tr>" for x in mine]
+            body.append("</table>")
+            for x in mine:
+                if x["ok"] and not x["notes"]:
+                    continue
+                md += ["", f"### {x['id']} {x['title']}: {x['status']}"] + [f"- {n}" for n in x["notes"]]
+                body.append(f"<h3>{x['id']} {html.escape(x['title'])}: {x['status']}</h3>")
+                body += [f"<p>{html.escape(n)}</p>" for n in x["notes"]]
+                for test, msg in x["failures"][:5]:
+                    md += ["", f"`{test}`" if test else "", "```", msg.strip()[:3000], "```"]
+                    body.append(f"<p><code>{html.escape(test)}</code></p><pre>{html.escape(msg.strip()[:3000])}</pre>")
+                for test, label, img in x["images"]:
+                    md.append(f"![{label}](images/{img})")
+                    body.append(f"<figure style='display:inline-block'><img src='images/{img}' width=256>"
+                                f"<figcaption>{label}</figcaption></figure>")
+        (self.out / "report.md").write_text("\n".join(md) + "\n")
+        (self.out / "report.html").write_text("<!doctype html><meta charset=utf-8><title>Grading report</title>"
+                                              "<body style='font-family:sans-serif'>" + "\n".join(body) + "</body>\n")
+
+
+# --- Batch ------------------------------------------------------------------------------------------
+def write_batch_outputs(out, results, labs):
+    columns = [e for l in labs for e in l["exercises"]]
+    with open(out / "gradebook.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["student"] + [e["id"] for e in columns] + ["total", "max"])
+        for r in sorted(results, key=lambda r: r["name"]):
+            by_id = {}
+            for x in r["entries"]:
+                by_id[x["id"]] = by_id.get(x["id"], 0) + x["score"]
+            w.writerow([r["name"]] + [by_id.get(e["id"], 0) for e in columns] + [r["score"], r["max_score"]])
+    n = len(results)
+    md = [f"# Class summary: {n} submissions", "",
+          f"Mean score {sum(r['score'] for r in results) / max(n, 1):.1f} of {results[0]['max_score'] if results else 0}.",
+          "", "| exercise | points | passed | most common failure |", "|---|---|---|---|"]
+    for e in columns:
+        rows = [x for r in results for x in r["entries"] if x["id"] == e["id"] and "held-out" not in x["title"]]
+        passed = sum(x["ok"] for x in rows)
+        reasons = {}
+        for x in rows:
+            if not x["ok"]:
+                key = re.sub(r"[-\d.]+", "#", first_line(x["failures"][0][1]) if x["failures"] else x["status"])[:120]
+                reasons[key] = reasons.get(key, 0) + 1
+        common = max(reasons.items(), key=lambda kv: kv[1]) if reasons else ("", 0)
+        cell = f"{common[1]}× {common[0]}".replace("|", "\\|") if common[1] else ""
+        md.append(f"| {e['id']} {e['title']} | {e['points']} | {passed} of {len(rows)} "
+                  f"({100 * passed / max(len(rows), 1):.0f}%) | {cell} |")
+    md += ["", "| student | score | seconds |", "|---|---|---|"]
+    md += [f"| {r['name']} | {r['score']} / {r['max_score']} | {r['seconds']:.1f} |"
+           for r in sorted(results, key=lambda r: r["name"])]
+    (out / "summary.md").write_text("\n".join(md) + "\n")
+
+
+def main():
+    ap = argparse.ArgumentParser(prog="workbook grade", description=__doc__.split("\n")[0])
+    ap.add_argument("submission", nargs="?", help="a submission (folder or archive), or with --batch a folder of them")
+    ap.add_argument("--prepare-only", action="store_true", help="only build the grading framework (Gradescope's setup)")
+    ap.add_argument("--batch", action="store_true", help="grade every folder or archive inside SUBMISSION")
+    ap.add_argument("--out", help="where the results go (default: grades/<name>)")
+    ap.add_argument("--labs", help="only these labs, e.g. 01,02")
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2, help="submissions graded at once (batch)")
+    ap.add_argument("--timeout", type=int, default=60, help="seconds for one exercise's tests")
+    ap.add_argument("--name", help="the student's name in the reports (default: the submission's name)")
+    args = ap.parse_args()
+    only = [x.strip().zfill(2) for x in args.labs.split(",")] if args.labs else None
+    labs = load_labs(only)
+    if args.prepare_only:
+        secs = Workspace(0, labs, ROOT / "build-grade").prepare(os.cpu_count() or 2)
+        log(f"grade: the grading build is ready ({secs:.0f} s)")
+        return 0
+    if not args.submission:
+        ap.error("a SUBMISSION (or --batch DIR, or --prepare-only) is needed")
+    src = Path(args.submission)
+    if not src.exists():
+        log(f"grade: no such submission or folder: {src}")
+        return 2
+    subs = sorted(p for p in src.iterdir() if p.is_dir() or p.suffix in (".zip", ".tar", ".tgz", ".gz")) \
+        if args.batch else [src]
+    if args.batch and not subs:
+        log(f"grade: {src} holds no submissions (folders or .zip/.tar archives)")
+        return 2
+    out = Path(args.out) if args.out else ROOT / "grades" / (src.name if args.batch else src.name.split(".")[0])
+    out.mkdir(parents=True, exist_ok=True)
+    workers = max(1, min(args.jobs, len(subs)))
+    base = ROOT / "build-grade"
+    sandbox = Sandbox()
+    for n in sandbox.notes:
+        log(f"grade: note: {n}")
+    spaces = [Workspace(k, labs, base) for k in range(workers)]
+    for ws in spaces:
+        log(f"grade: preparing the grading build {ws.dir} (the first time builds the framework) ...")
+        secs = ws.prepare(max(1, (os.cpu_count() or 2)))
+        log(f"grade: ready in {secs:.0f} s")
+    if os.geteuid() == 0:  # nobody must read the build (and the tree) and write test-output
+        for ws in spaces:
+            for p in [base, ws.dir, ws.build]:
+                os.chmod(p, 0o755)
+    free = list(spaces)
+    lock = threading.Lock()
+    done, results = [0], []
+
+    def one(sub):
+        with lock:
+            ws = free.pop()
+        try:
+            name = args.name or sub.name.split(".")[0]
+            r = Grader(ws, labs, sandbox, args.timeout).grade(sub, out / name if args.batch else out, name)
+        finally:
+            with lock:
+                free.append(ws)
+        with lock:
+            done[0] += 1
+            results.append(r)
+            print(f"\r[{done[0]}/{len(subs)}] {r['name']}: {r['score']} of {r['max_score']} "
+                  f"({r['seconds']:.0f} s)" + " " * 20, end="" if args.batch else "\n", file=sys.stderr, flush=True)
+        return r
+
+    t0 = time.time()
+    with concurrent.futures.ThreadPoolExecutor(workers) as pool:
+        list(pool.map(one, subs))
+    if args.batch:
+        log("")
+        write_batch_outputs(out, results, labs)
+        log(f"grade: {len(subs)} submissions in {time.time() - t0:.0f} s; wrote {out / 'gradebook.csv'} and "
+            f"{out / 'summary.md'}")
+    else:
+        r = results[0]
+        for x in r["entries"]:
+            log(f"  {x['id']:<5} {x['title'][:52]:<52} {x['status']:<16} {x['score']:>3} / {x['points']}")
+        log(f"grade: {r['score']} of {r['max_score']} points in {r['seconds']:.1f} s; wrote {out}/results.json, "
+            f"junit.xml, report.md, report.html")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,146 @@
+#!/usr/bin/python3
+"""Writes a class of synthetic submissions, made from the solutions, to test the grader:
+./workbook make-submissions DIR [--labs 01,02]
+
+  full                 every exercise solved: full marks
+  stubs                the student edition as handed out: zero
+  one_wrong            full, with one mutant (tests/mutants) applied: loses that exercise only
+  compile_error        full, with a C++ syntax error in one exercise: loses that exercise only
+  segfault             full, with a null-pointer write in one C++ exercise
+  endless_loop_cpp     full, with a loop that never ends in one C++ exercise
+  endless_loop_glsl    full, with a loop that never ends in one GLSL exercise
+  archive.zip          full, zipped inside a top folder (as students upload it), missing one file
+
+DIR/expected.json gives the score each should get and the exercises it should lose, computed from
+labs/*/exercises.json: the grader is held against it by tests/grading.
+"""
+import argparse
+import json
+import re
+import shutil
+import sys
+import zipfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def labs(only):
+    out = []
+    for manifest in sorted((ROOT / "labs").glob("*/exercises.json")):
+        if only and manifest.parent.name[:2] not in only:
+            continue
+        out.append((manifest.parent.name, json.loads(manifest.read_text())["exercises"]))
+    return out
+
+
+def write_tree(dest, source_dir_of, the_labs):
+    for lab, exercises in the_labs:
+        for rel in sorted({e["file"] for e in exercises}):
+            target = dest / "labs" / lab / rel
+            target.parent.mkdir(parents=True, exist_ok=True)
+            shutil.copyfile(source_dir_of(lab) / rel, target)
+
+
+def edit(dest, lab, rel, ex_id, transform):
+    """Applies `transform` to the body of the first function inside exercise `ex_id`'s chunk."""
+    path = dest / "labs" / lab / rel
+    text = path.read_text()
+    at = text.index(f"// EXERCISE {ex_id}")
+    brace = text.index("{\n", text.index(")", at)) + 2  # the first function body after the marker
+    path.write_text(text[:brace] + transform + text[brace:])
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("dir")
+    ap.add_argument("--labs", help="only these labs, e.g. 01,02")
+    args = ap.parse_args()
+    only = [x.strip().zfill(2) for x in args.labs.split(",")] if args.labs else None
+    the_labs = labs(only)
+    if not (ROOT / "solutions").is_dir():
+        sys.exit("make-submissions: needs solutions/ (the instructor edition)")
+    out = Path(args.dir)
+    if out.exists():
+        shutil.rmtree(out)
+    out.mkdir(parents=True)
+    points = {e["id"]: e["points"] for _, ex in the_labs for e in ex}
+    max_score = sum(e["points"] for _, ex in the_labs for e in ex if not e.get("extension"))
+    bonus = sum(e["points"] for _, ex in the_labs for e in ex if e.get("extension"))
+    solution = lambda lab: ROOT / "solutions" / lab
+    expected = {}
+
+    def full(name):
+        write_tree(out / name, solution, the_labs)
+        return out / name
+
+    def expect(name, lost):
+        expected[name] = {"score": max_score + bonus - sum(points[i] for i in lost), "lost": sorted(lost)}
+
+    full("full")
+    expect("full", [])
+    write_tree(out / "stubs", lambda lab: ROOT / "labs" / lab, the_labs)
+    expect("stubs", list(points))
+
+    # Exercises to break: the first C++ and the first GLSL exercise of the first lab that has both.
+    cpp = next(((lab, e) for lab, ex in the_labs for e in ex if e["file"].endswith(".cpp")), None)
+    glsl = next(((lab, e) for lab, ex in the_labs for e in ex if e["file"].endswith(".glsl")), None)
+
+    mutant = next((m for lab, _ in the_labs for m in sorted((ROOT / "tests/mutants" / lab).glob("*.mutant"))), None)
+    if mutant:
+        fields = {"find": [], "replace": []}
+        meta = {}
+        for line in mutant.read_text().splitlines():
+            m = re.match(r"^(exercise|file|find|replace): ?(.*)$", line)
+            if m and m.group(1) in fields:
+                fields[m.group(1)].append(m.group(2))
+            elif m:
+                meta[m.group(1)] = m.group(2)
+        d = full("one_wrong")
+        path = d / "labs" / mutant.parent.name / meta["file"]
+        text = path.read_text()
+        for f, r in zip(fields["find"], fields["replace"]):
+            text = text.replace(f, r)
+        path.write_text(text)
+        expect("one_wrong", [meta["exercise"]])
+
+    if cpp:
+        lab, e = cpp
+        d = full("compile_error")
+        edit(d, lab, e["file"], e["id"], "  this is not C++;\n")
+        expect("compile_error", [e["id"]])
+        d = full("segfault")
+        edit(d, lab, e["file"], e["id"], "  *static_cast<volatile int*>(nullptr) = 1;  // crash\n")
+        expect("segfault", [e["id"]])
+        d = full("endless_loop_cpp")
+        edit(d, lab, e["file"], e["id"], "  for (volatile bool forever = true; forever;) {\n  }\n")
+        expect("endless_loop_cpp", [e["id"]])
+    if glsl:
+        lab, e = glsl
+        d = full("endless_loop_glsl")
+        # The loop changes a parameter the function goes on to use, so no compiler can drop it.
+        text = (d / "labs" / lab / e["file"]).read_text()
+        signature = text[text.index(f"// EXERCISE {e['id']}"):]
+        param = re.search(r"\w+\s*\(\s*(?:in\s+)?\w+\s+(\w+)", signature.split("\n", 1)[1]).group(1)
+        edit(d, lab, e["file"], e["id"], f"  for (uint i = 1u; i != 0u; i |= 1u) {param} += {param} * 1e-30;\n")
+        expect("endless_loop_glsl", [e["id"]])
+
+    # An upload as students make it: the whole folder zipped under a top folder, one file missing
+    # (its stub is graded, so that file's exercises are lost).
+    first_lab, first_ex = the_labs[0]
+    missing = first_ex[-1]["file"]
+    src = full("archive_tmp")
+    (src / "labs" / first_lab / missing).unlink()
+    (src / "README.txt").write_text("my work\n")
+    with zipfile.ZipFile(out / "archive.zip", "w") as z:
+        for p in sorted(src.rglob("*")):
+            z.write(p, Path("my-workbook") / p.relative_to(src))
+    shutil.rmtree(src)
+    expect("archive", [e["id"] for e in first_ex if e["file"] == missing])
+
+    (out / "expected.json").write_text(json.dumps(expected, indent=2) + "\n")
+    print(f"wrote {len(expected)} submissions to {out} (expected scores in expected.json)")
+
+
+if __name__ == "__main__":
+    main()
