@@ -240,8 +240,16 @@ def compiler_errors(output, limit=12):
 
 # --- Grading one submission -----------------------------------------------------------------------
 class Grader:
-    def __init__(self, ws, labs, sandbox, timeout):
+    def __init__(self, ws, labs, sandbox, timeout, jobs):
         self.ws, self.labs, self.sandbox, self.timeout = ws, labs, sandbox, timeout
+        self.build_jobs = self.test_jobs = max(1, jobs)  # cores for this submission
+
+    def build_all(self):
+        """Builds every lab's submission targets in one parallel run; False if anything failed."""
+        targets = [t for lab in self.labs for t in (f"lab{lab['nn']}_submission", f"lab{lab['nn']}_submission_tests")]
+        r = subprocess.run(["cmake", "--build", str(self.ws.build), "-j", str(self.build_jobs), "--target"] + targets,
+                           capture_output=True, text=True, timeout=1200)
+        return r.returncode == 0
 
     def build_lab(self, lab):
         nn = lab["nn"]
@@ -331,10 +339,41 @@ class Grader:
             return False, [("", "ERROR: no tests ran")], out
         return not failures, failures, out
 
+    def grade_exercise(self, lab, e, tests, broken):
+        """(ok, failures, images, hidden result, has hidden tests) of one exercise with the current build."""
+        ex_id, tag = e["id"], e["id"].replace(".", "_")
+        mine = [t for t in tests if f".Ex{tag}_" in t]
+        has_hidden = any(t.startswith("Hidden") for t in mine)
+        if ex_id in broken:
+            msg = broken[ex_id]
+            msg = msg if msg.startswith("ERROR") else f"ERROR: does not compile: {first_line(msg)}\n{msg}"
+            return False, [("", msg)], [], None, has_hidden
+        ok, failures, _ = self.run_tests(lab, f"*.Ex{tag}_*-Hidden*.*", f"{tag}_visible")
+        hidden_result = None
+        if has_hidden and any("timed out after" in m for _, m in failures):  # another wait would tell nothing new
+            hidden_result = (False, [("", "ERROR: not run: the exercise's other tests timed out")], "")
+        elif has_hidden:
+            hidden_result = self.run_tests(lab, f"Hidden*.Ex{tag}_*", f"{tag}_hidden")
+        kept = copy_images(failures + (hidden_result[1] if hidden_result else []), self.images, tag)
+        return ok, failures, kept, hidden_result, has_hidden
+
+    def grade_alone(self, lab, e, mine, tests):
+        """Grades C++ exercise `e` with the solution's exercise.cpp and only its own chunk from `mine`."""
+        solution = ROOT / "solutions" / lab["name"] / "exercise.cpp"
+        hybrid = with_chunk(solution.read_text(), mine, e["id"]) if solution.exists() else None
+        if hybrid is None:
+            return None
+        self.ws.place(lab["name"], "exercise.cpp", hybrid.encode())
+        ok, _ = self.build_lab(lab)
+        if not ok:
+            return None
+        self.ws.make_readable()
+        return self.grade_exercise(lab, e, tests, {})
+
     def grade(self, submission, out_dir, name):
         t0 = time.time()
         out_dir.mkdir(parents=True, exist_ok=True)
-        images = out_dir / "images"
+        self.images = out_dir / "images"
         results = Results(out_dir, name, self.labs, self.sandbox)
         with tempfile.TemporaryDirectory(prefix="grade-") as scratch:
             try:
@@ -343,7 +382,9 @@ class Grader:
                 results.fail_all(f"ERROR: the submission could not be read: {e}")
                 return results.finish(time.time() - t0)
             self.ws.reset_to_stubs()
-            for lab in self.labs:
+            t_build = time.time()
+            found_files = {}
+            for lab in self.labs:  # every lab's files first: one parallel build for all when they compile
                 files, notes = {}, []
                 for rel in student_files(lab):
                     found = find_student_file(folder, lab["name"], rel)
@@ -353,28 +394,50 @@ class Grader:
                         notes.append(f"labs/{lab['name']}/{rel} is over 1 MiB: the stub is graded")
                     else:
                         files[rel] = found.read_bytes()
-                try:
-                    broken = self.compile_lab(lab, files)
-                except subprocess.TimeoutExpired:
-                    broken = {e["id"]: "ERROR: the build timed out" for e in lab["exercises"]}
+                found_files[lab["name"]] = (files, notes)
+                for rel, content in files.items():
+                    self.ws.place(lab["name"], rel, content)
+            all_built = self.build_all()
+            results.timing["build"] = time.time() - t_build
+            t_tests = time.time()
+            for lab in self.labs:
+                files, notes = found_files[lab["name"]]
+                broken = {}
+                if not all_built:
+                    try:
+                        broken = self.compile_lab(lab, files)
+                    except subprocess.TimeoutExpired:
+                        broken = {e["id"]: "ERROR: the build timed out" for e in lab["exercises"]}
                 self.ws.make_readable()
                 tests = self.list_tests(lab)
+                with concurrent.futures.ThreadPoolExecutor(self.test_jobs) as pool:  # one process each
+                    futures = {e["id"]: pool.submit(self.grade_exercise, lab, e, tests, broken) for e in lab["exercises"]}
+                    outcome = {i: f.result() for i, f in futures.items()}
+                # A C++ exercise runs in the app with the student's other C++ exercises: when several
+                # fail, one may be failing because of another (a crash, a loop, a wrong light fit).
+                # Each is then graded again in the solution's file with only its own chunk.
+                cpp_ids = [e["id"] for e in lab["exercises"] if e["file"] == "exercise.cpp"]
+                failing = [i for i in cpp_ids if i in broken or not outcome[i][0]]
+                failed = [e for e in lab["exercises"] if e["id"] in failing and e["id"] not in broken
+                          and runs_app(outcome[e["id"]])]
+                if failed and len(failing) >= 2 and "exercise.cpp" in files:
+                    for e in failed:
+                        alone = self.grade_alone(lab, e, files["exercise.cpp"].decode(errors="replace"), tests)
+                        if alone is not None:
+                            outcome[e["id"]] = alone
                 for e in lab["exercises"]:
-                    ex_id, tag = e["id"], e["id"].replace(".", "_")
-                    mine = [t for t in tests if f".Ex{tag}_" in t]
-                    hidden = [t for t in mine if t.startswith("Hidden")]
-                    if ex_id in broken:
-                        msg = broken[ex_id]
-                        msg = msg if msg.startswith("ERROR") else f"ERROR: does not compile:\n{msg}"
-                        results.add(lab, e, False, [("", msg)], [], notes, hidden=bool(hidden))
-                        continue
-                    ok, failures, _ = self.run_tests(lab, f"*.Ex{tag}_*-Hidden*.*", f"{tag}_visible")
-                    hidden_result = None
-                    if hidden:
-                        hidden_result = self.run_tests(lab, f"Hidden*.Ex{tag}_*", f"{tag}_hidden")
-                    kept = copy_images(failures + (hidden_result[1] if hidden_result else []), images, tag)
-                    results.add(lab, e, ok, failures, kept, notes, hidden_result=hidden_result, hidden=bool(hidden))
+                    ok, failures, kept, hidden_result, has_hidden = outcome[e["id"]]
+                    results.add(lab, e, ok, failures, kept, notes, hidden_result=hidden_result, hidden=has_hidden)
+            results.timing["tests"] = time.time() - t_tests
         return results.finish(time.time() - t0)
+
+
+def runs_app(outcome):
+    """Whether a failure came from a test that runs the lab app (by convention their names have Scene
+    or Measured in them), where the student's other C++ exercises run too."""
+    ok, failures, _, hidden_result, _ = outcome
+    every = failures + (hidden_result[1] if hidden_result else [])
+    return any("Scene" in test or "Measured" in test for test, _ in every)
 
 
 def copy_images(failures, images, tag):
@@ -392,6 +455,12 @@ def copy_images(failures, images, tag):
 
 # --- Results: results.json, junit.xml, report.md, report.html -------------------------------------
 def first_line(msg):
+    """The diagnosis: the first line that starts at NOT IMPLEMENTED, WRONG or ERROR (gtest puts the
+    test's file and line first), else the first line."""
+    for line in msg.splitlines():
+        for key in ("NOT IMPLEMENTED", "WRONG", "ERROR"):
+            if key in line:
+                return line[line.index(key):].strip()
     for line in msg.splitlines():
         if line.strip():
             return line.strip()
@@ -408,6 +477,7 @@ class Results:
     def __init__(self, out_dir, name, labs, sandbox):
         self.out, self.name, self.labs, self.sandbox = out_dir, name, labs, sandbox
         self.entries = []  # one per exercise (and one per exercise's held-out tests)
+        self.timing = {"build": 0.0, "tests": 0.0}
         self.max_score = sum(e["points"] for l in labs for e in l["exercises"] if not e.get("extension"))
         self.write_json(partial=True)
 
@@ -465,7 +535,7 @@ class Results:
         self.write_junit(elapsed)
         self.write_reports(elapsed)
         return {"name": self.name, "score": self.score(), "max_score": self.max_score, "entries": self.entries,
-                "seconds": elapsed}
+                "seconds": elapsed, "timing": self.timing}
 
     def write_junit(self, elapsed):
         parts = ['<?xml version="1.0" encoding="UTF-8"?>',
@@ -488,7 +558,8 @@ class Results:
 
     def write_reports(self, elapsed):
         md = [f"# Grading report: {self.name}", "",
-              f"**{self.score()} of {self.max_score} points** (graded in {elapsed:.0f} s; tests ran as "
+              f"**{self.score()} of {self.max_score} points** (graded in {elapsed:.0f} s: build "
+              f"{self.timing['build']:.0f} s, tests {self.timing['tests']:.0f} s; tests ran as "
               f"{self.sandbox.user}, each exercise in its own process)."]
         md += [f"- note: {n}" for n in self.sandbox.notes]
         body = [f"<h1>Grading report: {html.escape(self.name)}</h1>",
@@ -547,9 +618,9 @@ def write_batch_outputs(out, results, labs):
         cell = f"{common[1]}× {common[0]}".replace("|", "\\|") if common[1] else ""
         md.append(f"| {e['id']} {e['title']} | {e['points']} | {passed} of {len(rows)} "
                   f"({100 * passed / max(len(rows), 1):.0f}%) | {cell} |")
-    md += ["", "| student | score | seconds |", "|---|---|---|"]
-    md += [f"| {r['name']} | {r['score']} / {r['max_score']} | {r['seconds']:.1f} |"
-           for r in sorted(results, key=lambda r: r["name"])]
+    md += ["", "| student | score | seconds (build + tests) |", "|---|---|---|"]
+    md += [f"| {r['name']} | {r['score']} / {r['max_score']} | {r['seconds']:.1f} ({r['timing']['build']:.1f} + "
+           f"{r['timing']['tests']:.1f}) |" for r in sorted(results, key=lambda r: r["name"])]
     (out / "summary.md").write_text("\n".join(md) + "\n")
 
 
@@ -606,7 +677,8 @@ def main():
             ws = free.pop()
         try:
             name = args.name or sub.name.split(".")[0]
-            r = Grader(ws, labs, sandbox, args.timeout).grade(sub, out / name if args.batch else out, name)
+            cores = max(1, (os.cpu_count() or 2) // workers)
+            r = Grader(ws, labs, sandbox, args.timeout, cores).grade(sub, out / name if args.batch else out, name)
         finally:
             with lock:
                 free.append(ws)
@@ -628,7 +700,8 @@ def main():
     else:
         r = results[0]
         for x in r["entries"]:
-            log(f"  {x['id']:<5} {x['title'][:52]:<52} {x['status']:<16} {x['score']:>3} / {x['points']}")
+            log(f"  {x['id']:<5} {x['title'][:52]:<52} {x['status']:<16} {x['score']:>3} / {x['points']}  "
+                f"{first_line(x['failures'][0][1])[:70] if x['failures'] else ''}")
         log(f"grade: {r['score']} of {r['max_score']} points in {r['seconds']:.1f} s; wrote {out}/results.json, "
             f"junit.xml, report.md, report.html")
     return 0

@@ -118,11 +118,16 @@ def main():
     if glsl:
         lab, e = glsl
         d = full("endless_loop_glsl")
-        # The loop changes a parameter the function goes on to use, so no compiler can drop it.
+        # The loop reads and writes a parameter the function goes on to use, and whether it ends
+        # depends on that value, so no compiler can drop it. In GLSL it never ends (the value steps
+        # past 12345.678, then stalls at 2^24); on a GPU it hangs until the grader's time limit.
+        # Mesa's llvmpipe cuts every shader loop off after 65535 iterations, so there the parameter
+        # comes out wrong instead: either way only this exercise is lost.
         text = (d / "labs" / lab / e["file"]).read_text()
-        signature = text[text.index(f"// EXERCISE {e['id']}"):]
-        param = re.search(r"\w+\s*\(\s*(?:in\s+)?\w+\s+(\w+)", signature.split("\n", 1)[1]).group(1)
-        edit(d, lab, e["file"], e["id"], f"  for (uint i = 1u; i != 0u; i |= 1u) {param} += {param} * 1e-30;\n")
+        signature = text[text.index(f"// EXERCISE {e['id']}"):].split("\n", 1)[1]
+        kind, param = re.search(r"\w+\s*\(\s*(?:in\s+)?(\w+)\s+(\w+)", signature).groups()
+        c = param if kind == "float" else f"{param}[0][0]" if kind.startswith("mat") else f"{param}.x"
+        edit(d, lab, e["file"], e["id"], f"  while ({c} != 12345.678) {c} += 1.0;\n")
         expect("endless_loop_glsl", [e["id"]])
 
     # An upload as students make it: the whole folder zipped under a top folder, one file missing

@@ -18,7 +18,7 @@ def check(cond, what):
 
 # The reason each broken submission must give for the exercise it loses.
 reasons = {"compile_error": "does not compile", "segfault": "SIGSEGV", "endless_loop_cpp": "timed out",
-           "endless_loop_glsl": "timed out", "one_wrong": "WRONG", "stubs": "NOT IMPLEMENTED",
+           "endless_loop_glsl": ("timed out", "WRONG"),  # llvmpipe ends any shader loop after 65535 turns "one_wrong": "WRONG", "stubs": "NOT IMPLEMENTED",
            "archive": "not in the submission"}
 
 rows = {r["student"]: r for r in csv.DictReader(open(grades / "gradebook.csv"))}
@@ -46,7 +46,8 @@ for name, want in expected.items():
     # The report says why.
     report = (grades / name / "report.md").read_text() if (grades / name / "report.md").exists() else ""
     if name in reasons:
-        check(reasons[name] in report, f"{name}: the report does not say '{reasons[name]}'")
+        said = reasons[name] if isinstance(reasons[name], tuple) else (reasons[name],)
+        check(any(r in report for r in said), f"{name}: the report does not say {' or '.join(said)}")
     check((grades / name / "junit.xml").exists(), f"{name}: no junit.xml")
     # The gradebook row adds up and matches.
     row = rows.get(name)
