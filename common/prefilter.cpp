@@ -87,6 +87,7 @@ void PrefilterSettings::addTo(Settings& settings) {
   settings.addChoice("prefilter.kernel", kernel, {"1", "3", "5", "7"}, "blur width in texels");
   settings.add("prefilter.gaussian", gaussian, "Gaussian weights (off: box)");
   settings.add("prefilter.mipmaps", mipmaps, "mipmaps with trilinear and 8x anisotropic filtering");
+  settings.add("prefilter.compute", compute, "blur with a compute shader instead of fragment passes");
   settings.assign("shadow.map_size=512");
 }
 
@@ -133,28 +134,63 @@ void FilteredShadowMap::fill(const Program& program) const {
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+namespace {
+const char* imageFormat(GLenum format) {
+  switch (format) {
+    case GL_R32F:
+      return "r32f";
+    case GL_RG32F:
+      return "rg32f";
+    case GL_R16F:
+      return "r16f";
+    case GL_RG16F:
+      return "rg16f";
+    case GL_RGBA16F:
+      return "rgba16f";
+    default:
+      return "rgba32f";
+  }
+}
+}  // namespace
+
 void FilteredShadowMap::prefilter(const Program& blur) {
   if (options_.kernel > 1) {
-    // Two passes of a 1D kernel: O(n) taps per texel instead of O(n²) for the 2D kernel.
-    glDisable(GL_DEPTH_TEST);
-    glBindVertexArray(vao_.id());
-    blur.use();
-    const int radius = options_.kernel / 2;
+    const bool compute = options_.compute;
+    if (compute && (!compute_ || computeFormat_ != options_.format)) {
+      compute_ =
+          std::make_unique<Program>(std::vector<ShaderStage>{{GL_COMPUTE_SHADER, "wb/blur.comp"}},
+                                    std::string("#define WB_IMAGE_FORMAT ") + imageFormat(options_.format) + "\n");
+      computeFormat_ = options_.format;
+    }
+    const Program& p = compute ? *compute_ : blur;
+    p.use();
     float weights[8];
     blurWeights(options_.kernel, options_.gaussian, weights);
-    glProgramUniform1fv(blur.id(), glGetUniformLocation(blur.id(), "u_weights"), 8, weights);
-    blur.set("u_radius", radius);
-    blur.set("u_source", 0);
-    glViewport(0, 0, size_, size_);
-    glBindFramebuffer(GL_FRAMEBUFFER, scratchFbo_.id());
-    glBindTextureUnit(0, color_.id());
-    glProgramUniform2i(blur.id(), glGetUniformLocation(blur.id(), "u_axis"), 1, 0);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindFramebuffer(GL_FRAMEBUFFER, backFbo_.id());
-    glBindTextureUnit(0, scratch_.id());
-    glProgramUniform2i(blur.id(), glGetUniformLocation(blur.id(), "u_axis"), 0, 1);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glEnable(GL_DEPTH_TEST);
+    glProgramUniform1fv(p.id(), glGetUniformLocation(p.id(), "u_weights"), 8, weights);
+    p.set("u_radius", options_.kernel / 2);
+    p.set("u_source", 0);
+    if (!compute) {
+      glDisable(GL_DEPTH_TEST);
+      glBindVertexArray(vao_.id());
+      glViewport(0, 0, size_, size_);
+    }
+    // Two passes of a 1D kernel (horizontal into scratch, vertical back): O(n) taps per texel
+    // instead of O(n²) for the 2D kernel.
+    const GLuint from[2] = {color_.id(), scratch_.id()}, to[2] = {scratch_.id(), color_.id()};
+    const GLuint fbo[2] = {scratchFbo_.id(), backFbo_.id()};
+    for (int pass = 0; pass < 2; ++pass) {
+      glProgramUniform2i(p.id(), glGetUniformLocation(p.id(), "u_axis"), pass == 0, pass == 1);
+      glBindTextureUnit(0, from[pass]);
+      if (compute) {
+        glBindImageTexture(0, to[pass], 0, GL_FALSE, 0, GL_WRITE_ONLY, options_.format);
+        glDispatchCompute(GLuint(size_ + 7) / 8, GLuint(size_ + 7) / 8, 1);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+      } else {
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo[pass]);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+      }
+    }
+    if (!compute) glEnable(GL_DEPTH_TEST);
   }
   if (options_.mipmaps) glGenerateTextureMipmap(color_.id());
 }

@@ -253,7 +253,7 @@ class Grader:
 
     def build_lab(self, lab):
         nn = lab["nn"]
-        r = subprocess.run(["cmake", "--build", str(self.ws.build), "--target", f"lab{nn}_submission",
+        r = subprocess.run(["cmake", "--build", str(self.ws.build), "-j", str(self.build_jobs), "--target", f"lab{nn}_submission",
                             f"lab{nn}_submission_tests"], capture_output=True, text=True, timeout=600)
         return r.returncode == 0, r.stdout + r.stderr
 

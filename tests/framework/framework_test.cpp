@@ -299,3 +299,33 @@ TEST(GroundTruth, ReferenceDifferenceCountsLighterAndDarker) {
   EXPECT_EQ(wb::compareWithReference(rendered, reference, 1, 2).lighter, 1);
   EXPECT_EQ(wb::compareWithReference(rendered, reference, 2, 5).lighter, 0);
 }
+
+// The compute blur (prefilter.compute) and the fragment blur give the same map: same taps, weights
+// and edge clamping, for every format, width and weighting.
+TEST_F(GlTest, PrefilterComputeMatchesFragment) {
+  wb::Program blur({{GL_VERTEX_SHADER, "wb/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "wb/blur.frag"}});
+  constexpr int kSize = 64;
+  std::vector<float> input(kSize * kSize * 4);
+  for (size_t k = 0; k < input.size(); ++k) input[k] = float((k * 2654435761u) % 1000u) / 1000.0f;
+  for (GLenum format : {GL_RGBA32F, GL_RG32F, GL_RGBA16F})
+    for (int kernel : {3, 7})
+      for (bool gaussian : {false, true}) {
+        std::vector<float> out[2];
+        for (int compute = 0; compute < 2; ++compute) {
+          wb::FilteredShadowMap map;
+          map.resize(kSize, {format, kernel, gaussian, false, compute == 1});
+          glTextureSubImage2D(map.texture(), 0, 0, 0, kSize, kSize, GL_RGBA, GL_FLOAT, input.data());
+          map.prefilter(blur);
+          out[compute].resize(input.size());
+          glGetTextureImage(map.texture(), 0, GL_RGBA, GL_FLOAT, GLsizei(out[compute].size() * sizeof(float)),
+                            out[compute].data());
+        }
+        double diff = 0, change = 0;
+        for (size_t k = 0; k < input.size(); ++k)
+          diff = std::max(diff, double(std::abs(out[0][k] - out[1][k]))),
+          change = std::max(change, double(std::abs(out[0][k] - input[k])));
+        const char* name = format == GL_RGBA32F ? "rgba32f" : format == GL_RG32F ? "rg32f" : "rgba16f";
+        EXPECT_LE(diff, 1e-6) << name << ", kernel " << kernel << (gaussian ? " Gaussian" : " box");
+        EXPECT_GT(change, 0.1) << "the blur changed nothing: " << name << ", kernel " << kernel;
+      }
+}
