@@ -612,7 +612,9 @@ def write_batch_outputs(out, results, labs):
         reasons = {}
         for x in rows:
             if not x["ok"]:
-                key = re.sub(r"[-\d.]+", "#", first_line(x["failures"][0][1]) if x["failures"] else x["status"])[:120]
+                line = first_line(x["failures"][0][1]) if x["failures"] else x["status"]
+                line = re.sub(r"/\S*/", "", line)  # paths differ per student and worker
+                key = re.sub(r"\b\d+(\.\d+)?\b", "#", line)[:120]
                 reasons[key] = reasons.get(key, 0) + 1
         common = max(reasons.items(), key=lambda kv: kv[1]) if reasons else ("", 0)
         cell = f"{common[1]}× {common[0]}".replace("|", "\\|") if common[1] else ""

@@ -158,9 +158,9 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
   const fs::path out = fs::path(variant::kOutputDir) / ("Ex" + id + "_" + name);
   // Held-out scenes ("hidden/NAME") keep their golden data in the instructor-only tests/hidden/NN_name/golden.
   const bool hidden = name.rfind("hidden/", 0) == 0;
-  const fs::path golden = hidden ? fs::path(variant::kSourceDir) / "tests/hidden" / variant::kLab / "golden" /
-                                       (name.substr(7) + ".pfm")
-                                 : fs::path(variant::kSourceDir) / "tests/golden" / variant::kLab / (name + ".pfm");
+  const fs::path golden =
+      hidden ? fs::path(variant::kSourceDir) / "tests/hidden" / variant::kLab / "golden" / (name.substr(7) + ".pfm")
+             : fs::path(variant::kSourceDir) / "tests/golden" / variant::kLab / (name + ".pfm");
   const fs::path pfm = out / "result.pfm";
   std::vector<std::string> all = {"--size", "256x256", "--dump-visibility", pfm.string()};
   all.insert(all.end(), args.begin(), args.end());
