@@ -508,10 +508,11 @@ class Results:
         return sum(x["score"] for x in self.entries)
 
     def entry_output(self, x):
+        """Markdown for Gradescope: the status, notes and first failures, without the grader's paths."""
         lines = [f"**{x['status']}**"] + [f"- {n}" for n in x["notes"]]
         for test, msg in x["failures"][:5]:
             lines.append(f"\n`{test}`\n```\n{msg.strip()[:2000]}\n```" if test else f"\n```\n{msg.strip()[:2000]}\n```")
-        return "\n".join(lines)
+        return "\n".join(lines).replace(str(ROOT) + "/", "")
 
     def write_json(self, partial, elapsed=0.0):
         tests = [{"name": f"{x['id']} {x['title']}", "number": x["id"], "score": x["score"],
