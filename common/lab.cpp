@@ -117,6 +117,7 @@ struct Lab::Impl {
   int wallCount = 0;
   glm::dvec2 lastMouse{0};
   bool keyDown[GLFW_KEY_LAST + 1] = {};
+  bool hidePanels = false;  // H: the scene alone, for a lecture
 
   PassStats& stats(const std::string& name) {
     for (auto& [n, s] : passes)
@@ -514,6 +515,7 @@ void Lab::frame(float dt) {
         if (i.pressed(win, GLFW_KEY_1 + k) && k < int(scene.cameras.size()))
           bookmark_ = k, camera.pose = scene.cameras[k];
       if (i.pressed(win, GLFW_KEY_F12) || i.pressed(win, GLFW_KEY_P)) i.screenshotRequested = true;
+      if (i.pressed(win, GLFW_KEY_H)) i.hidePanels = !i.hidePanels;
     }
     frameSize_ = glm::max(i.ctx->framebufferSize(), glm::ivec2(16));
   }
@@ -654,6 +656,13 @@ void Lab::drawScene(bool programsOk) {
 
 void Lab::drawShell() {
   auto& i = *impl_;
+  if (i.hidePanels) {
+    ImGui::SetNextWindowPos(ImVec2(8, 8));
+    ImGui::Begin("##panels hidden", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::TextUnformatted("H: show the panels");
+    ImGui::End();
+    return;
+  }
   const ImVec4 red(1, 0.4f, 0.4f, 1), green(0.5f, 1, 0.5f, 1), yellow(1, 0.85f, 0.3f, 1), grey(0.7f, 0.7f, 0.7f, 1);
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
   ImGui::Begin(("Lab " + number_ + ": " + title_).c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
@@ -712,7 +721,7 @@ void Lab::drawShell() {
     }
   for (const auto& w : warnings_) ImGui::TextColored(yellow, "warning: %s", w.c_str());
   if (!i.lastScreenshot.empty()) ImGui::TextColored(grey, "saved %s", i.lastScreenshot.c_str());
-  ImGui::TextColored(grey, "drag: orbit | wheel: zoom | 1-9: bookmarks | F12: screenshot");
+  ImGui::TextColored(grey, "drag: orbit | wheel: zoom | 1-9: bookmarks | H: hide panels | F12: screenshot");
   ImGui::End();
 
   ImGui::SetNextWindowPos(ImVec2(float(frameSize_.x) - 8, 8), ImGuiCond_FirstUseEver, ImVec2(1, 0));
