@@ -62,8 +62,11 @@ class GpuScene {
   /// Uploads every object and loads the textures (stb_image); throws wb::UsageError on a bad image.
   explicit GpuScene(const Scene& scene);
   /// Draws every object with `program`, setting u_model, u_color and u_hasTexture and binding the
-  /// object's texture to unit `textureUnit` (a white texel when it has none).
-  void draw(const Program& program, int textureUnit = 1) const;
+  /// object's texture to unit `textureUnit` (a white texel when it has none). The default is the
+  /// last unit GL 4.5 guarantees, so units 0-14 stay the lab's: a shadow map bound to unit 1 is not
+  /// replaced by a leaf texture half-way through the draw.
+  void draw(const Program& program, int textureUnit = kAlbedoUnit) const;
+  static constexpr int kAlbedoUnit = 15;  ///< GL 4.5 guarantees 16 texture units per stage
 
  private:
   struct Item {
