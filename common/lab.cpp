@@ -781,11 +781,6 @@ int Lab::sweep() {
     for (size_t c = 0; c < cells.size(); ++c) csv << (c ? "," : "") << cells[c];
     if (csv.is_open()) csv << "\n";
   };
-  auto fmt = [](const char* f, double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, f, v);
-    return std::string(b);
-  };
   size_t total = 1;
   for (const auto& sw : i.sweeps) total *= sw.second.size();
   std::vector<std::string> passNames;
@@ -826,19 +821,19 @@ int Lab::sweep() {
     }
     if (i.opt.metrics) {
       measure(false);
-      cells.push_back(fmt("%.2f", 100 * i.lastMetrics.acneRate()));
-      cells.push_back(fmt("%.2f", 100 * i.lastMetrics.leakRate()));
-      cells.push_back(i.lastGap < 0 ? "n/a" : fmt("%.1f", i.lastGap));
-      cells.push_back(fmt("%.2f", 100 * i.lastMetrics.meanShadowLight()));
+      cells.push_back(strf("%.2f", 100 * i.lastMetrics.acneRate()));
+      cells.push_back(strf("%.2f", 100 * i.lastMetrics.leakRate()));
+      cells.push_back(i.lastGap < 0 ? "n/a" : strf("%.1f", i.lastGap));
+      cells.push_back(strf("%.2f", 100 * i.lastMetrics.meanShadowLight()));
       const bool ref = i.lastReference.pixels > 0;
-      cells.push_back(ref ? fmt("%.2f", 100 * i.lastReference.meanAbs()) : "n/a");
-      cells.push_back(ref ? fmt("%.2f", 100 * i.lastReference.lighterRate()) : "n/a");
+      cells.push_back(ref ? strf("%.2f", 100 * i.lastReference.meanAbs()) : "n/a");
+      cells.push_back(ref ? strf("%.2f", 100 * i.lastReference.lighterRate()) : "n/a");
     }
     for (const auto& p : passNames) {
       const PassStats& st = i.stats(p);
-      cells.push_back(st.count ? fmt("%.3f", st.sum / st.count) : "-");
+      cells.push_back(st.count ? strf("%.3f", st.sum / st.count) : "-");
     }
-    cells.push_back(fmt("%.2f", wall));
+    cells.push_back(strf("%.2f", wall));
     row(cells);
   }
   std::fprintf(stderr, "\r%*s\r", 24, "");

@@ -191,10 +191,14 @@ class Workspace:
             targets += [f"lab{nn}_solution", f"lab{nn}_submission", f"lab{nn}_submission_tests"]
         run_checked(["cmake", "--build", str(self.build), "-j", str(jobs), "--target"] + targets,
                     "build the grading framework")
+        self.make_readable()
         return time.time() - t0
 
     def make_readable(self):
-        """The sandboxed tests run as nobody: they read the build and write test-output/."""
+        """The sandboxed tests run as nobody: they read the build and write test-output/ (what they
+        create there is theirs; older files may be the grader's)."""
+        for p in (self.dir.parent, self.dir, self.build):
+            os.chmod(p, 0o755)
         out = self.build / "test-output"
         out.mkdir(exist_ok=True)
         for p in [out] + list(out.rglob("*")):
@@ -244,25 +248,21 @@ class Grader:
         self.ws, self.labs, self.sandbox, self.timeout = ws, labs, sandbox, timeout
         self.build_jobs = self.test_jobs = max(1, jobs)  # cores for this submission
 
-    def build_all(self):
-        """Builds every lab's submission targets in one parallel run; False if anything failed."""
-        targets = [t for lab in self.labs for t in (f"lab{lab['nn']}_submission", f"lab{lab['nn']}_submission_tests")]
+    def build(self, labs, timeout=600):
+        """Builds the submission app and tests of `labs`: (ok, compiler output)."""
+        targets = [t for lab in labs for t in (f"lab{lab['nn']}_submission", f"lab{lab['nn']}_submission_tests")]
         r = subprocess.run(["cmake", "--build", str(self.ws.build), "-j", str(self.build_jobs), "--target"] + targets,
-                           capture_output=True, text=True, timeout=1200)
-        return r.returncode == 0
+                           capture_output=True, text=True, timeout=timeout)
+        return r.returncode == 0, r.stdout + r.stderr
 
     def build_lab(self, lab):
-        nn = lab["nn"]
-        r = subprocess.run(["cmake", "--build", str(self.ws.build), "-j", str(self.build_jobs), "--target", f"lab{nn}_submission",
-                            f"lab{nn}_submission_tests"], capture_output=True, text=True, timeout=600)
-        return r.returncode == 0, r.stdout + r.stderr
+        return self.build([lab])
 
     def compile_lab(self, lab, files):
         """Builds the lab from the student's files. When exercise.cpp does not compile, each C++
         exercise is tried alone in the solution's file, so an error costs only the exercises it is
-        in. Returns {exercise id: compiler message} for the exercises that cannot be graded."""
-        for rel, content in files.items():
-            self.ws.place(lab["name"], rel, content)
+        in. Returns {exercise id: compiler message} for the exercises that cannot be graded. The
+        student's `files` are already in place."""
         ok, out = self.build_lab(lab)
         if ok:
             return {}
@@ -367,7 +367,6 @@ class Grader:
         ok, _ = self.build_lab(lab)
         if not ok:
             return None
-        self.ws.make_readable()
         return self.grade_exercise(lab, e, tests, {})
 
     def grade(self, submission, out_dir, name):
@@ -397,7 +396,7 @@ class Grader:
                 found_files[lab["name"]] = (files, notes)
                 for rel, content in files.items():
                     self.ws.place(lab["name"], rel, content)
-            all_built = self.build_all()
+            all_built, _ = self.build(self.labs, timeout=1200)  # one parallel build when every lab compiles
             results.timing["build"] = time.time() - t_build
             t_tests = time.time()
             for lab in self.labs:
@@ -408,7 +407,6 @@ class Grader:
                         broken = self.compile_lab(lab, files)
                     except subprocess.TimeoutExpired:
                         broken = {e["id"]: "ERROR: the build timed out" for e in lab["exercises"]}
-                self.ws.make_readable()
                 tests = self.list_tests(lab)
                 with concurrent.futures.ThreadPoolExecutor(self.test_jobs) as pool:  # one process each
                     futures = {e["id"]: pool.submit(self.grade_exercise, lab, e, tests, broken) for e in lab["exercises"]}
@@ -435,7 +433,7 @@ class Grader:
 def runs_app(outcome):
     """Whether a failure came from a test that runs the lab app (by convention their names have Scene
     or Measured in them), where the student's other C++ exercises run too."""
-    ok, failures, _, hidden_result, _ = outcome
+    _, failures, _, hidden_result, _ = outcome
     every = failures + (hidden_result[1] if hidden_result else [])
     return any("Scene" in test or "Measured" in test for test, _ in every)
 
@@ -667,10 +665,6 @@ def main():
         log(f"grade: preparing the grading build {ws.dir} (the first time builds the framework) ...")
         secs = ws.prepare(max(1, (os.cpu_count() or 2)))
         log(f"grade: ready in {secs:.0f} s")
-    if os.geteuid() == 0:  # nobody must read the build (and the tree) and write test-output
-        for ws in spaces:
-            for p in [base, ws.dir, ws.build]:
-                os.chmod(p, 0o755)
     free = list(spaces)
     lock = threading.Lock()
     done, results = [0], []

@@ -40,7 +40,7 @@ class PcfLab : public wb::Lab {
     // The hardware filter reads the same depth texture through a sampler that compares.
     GLuint id = 0;
     glCreateSamplers(1, &id);
-    compareSampler = id;
+    compareSampler = wb::Sampler(id);
     glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
     glSamplerParameteri(id, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
     glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -67,7 +67,7 @@ class PcfLab : public wb::Lab {
     const wb::Program& p = *scenePrograms[method];
     beginCameraPass(p, lightViewProj, shadowMap.texture());
     glBindTextureUnit(1, shadowMap.texture());
-    glBindSampler(1, compareSampler);
+    glBindSampler(1, compareSampler.id());
     p.set("u_lightDir", light.direction);
     p.set("u_bias", depthBias());
     p.set("u_radius", kernel);
@@ -84,7 +84,7 @@ class PcfLab : public wb::Lab {
   static constexpr int kMethods = 5;
   wb::Program* scenePrograms[kMethods] = {};  // PASS 2, one per pcf.method
   wb::ShadowMap shadowMap;
-  GLuint compareSampler = 0;   // lives as long as the context (the lab)
+  wb::Sampler compareSampler;  // the hardware filter's comparing sampler
   int method = 1;              // pcf.method: hardware, the cheapest: interactive on a CPU renderer
   int kernel = 1;              // radius index: width 1, 3, 5, 7
   float spacing = 1.0f;        // texels between grid taps

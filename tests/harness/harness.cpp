@@ -45,15 +45,18 @@ std::vector<uint8_t> diffImage(const FloatImage& ref, const FloatImage& got, flo
   }
   return rgba;
 }
+// Where a test's data file lives: `public_dir`/NAME, or for a held-out case ("hidden/NAME") the
+// instructor-only tests/hidden/<lab>/`hidden_dir`/NAME.
+fs::path dataFile(const std::string& name, const fs::path& publicDir, const char* hiddenDir) {
+  const fs::path root(variant::kSourceDir);
+  if (name.rfind("hidden/", 0) == 0) return root / "tests/hidden" / variant::kLab / hiddenDir / name.substr(7);
+  return root / publicDir / name;
+}
 }  // namespace
 
 std::vector<std::string> labArgs(const std::vector<std::string>& settings, const std::string& scene) {
   std::vector<std::string> args;
-  const fs::path root(variant::kSourceDir);
-  if (scene.rfind("hidden/", 0) == 0)
-    args = {"--scene", (root / "tests/hidden" / variant::kLab / "scenes" / scene.substr(7)).string()};
-  else if (!scene.empty())
-    args = {"--scene", (root / "scenes" / scene).string()};
+  if (!scene.empty()) args = {"--scene", dataFile(scene, "scenes", "scenes").string()};
   for (const auto& s : settings) args.insert(args.end(), {"--set", s});
   return args;
 }
@@ -156,11 +159,7 @@ SceneMetrics measureScene(const std::string& id, const std::string& name, const 
 void expectSceneMatchesGolden(const std::string& id, const std::string& name, const std::vector<std::string>& args,
                               float tolerance, double maxFailingFraction) {
   const fs::path out = fs::path(variant::kOutputDir) / ("Ex" + id + "_" + name);
-  // Held-out scenes ("hidden/NAME") keep their golden data in the instructor-only tests/hidden/NN_name/golden.
-  const bool hidden = name.rfind("hidden/", 0) == 0;
-  const fs::path golden =
-      hidden ? fs::path(variant::kSourceDir) / "tests/hidden" / variant::kLab / "golden" / (name.substr(7) + ".pfm")
-             : fs::path(variant::kSourceDir) / "tests/golden" / variant::kLab / (name + ".pfm");
+  const fs::path golden = dataFile(name + ".pfm", fs::path("tests/golden") / variant::kLab, "golden");
   const fs::path pfm = out / "result.pfm";
   std::vector<std::string> all = {"--size", "256x256", "--dump-visibility", pfm.string()};
   all.insert(all.end(), args.begin(), args.end());
