@@ -38,7 +38,12 @@ Framebuffer makeFramebuffer(std::initializer_list<GLuint> colors, GLuint depth) 
     glNamedFramebufferDrawBuffer(id, GL_NONE);
   else
     glNamedFramebufferDrawBuffers(id, GLsizei(buffers.size()), buffers.data());
-  if (depth) glNamedFramebufferTexture(id, GL_DEPTH_ATTACHMENT, depth, 0);
+  if (depth) {  // a depth + stencil format attaches to both
+    GLint format = 0;
+    glGetTextureLevelParameteriv(depth, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+    const bool stencil = format == GL_DEPTH24_STENCIL8 || format == GL_DEPTH32F_STENCIL8;
+    glNamedFramebufferTexture(id, stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, depth, 0);
+  }
   const GLenum status = glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)
     throw Error("framebuffer incomplete (status 0x" + std::to_string(status) + ")");

@@ -65,7 +65,8 @@ using Sampler = GlObject<gldelete::sampler>;          ///< owns a sampler object
 Texture makeTexture2D(GLenum internalFormat, int w, int h, GLenum filter = GL_NEAREST, GLenum wrap = GL_CLAMP_TO_EDGE);
 /// Creates a buffer with `bytes` of immutable storage, optionally filled from `data`.
 Buffer makeBuffer(size_t bytes, const void* data, GLbitfield flags = GL_DYNAMIC_STORAGE_BIT);
-/// Creates a framebuffer with the given color attachments and optional depth attachment; throws
+/// Creates a framebuffer with the given color attachments and optional depth (or depth + stencil,
+/// by the texture's format) attachment; throws
 /// wb::Error if it is incomplete.
 Framebuffer makeFramebuffer(std::initializer_list<GLuint> colors, GLuint depth);
 

@@ -1,11 +1,17 @@
 /// @file lab.hpp
-/// The lab base class: the hooks a lab overrides (init, update, render, ui), the shared command
-/// line, the ImGui shell (info panel, Settings window, debug views), GPU pass timers, screenshots,
-/// visibility dumps and the exercise status board. A lab's main() is one line: wb::run<MyLab>().
+/// What a lab sees: the hooks it overrides (init, update, render, ui) and a handful of helpers
+/// (loadProgram, attempt / glslExercise, timePass, warn, the shadow and camera-pass helpers). The
+/// machinery behind them (the app, command line, frame target, debug views, measurement, bench)
+/// lives in files a lab author can leave closed. A lab's main() is one line: wb::run<MyLab>().
 #pragma once
 #include "common/camera.hpp"
+#include "common/debug_views.hpp"
 #include "common/error.hpp"
+#include "common/exercise_board.hpp"
+#include "common/frame_target.hpp"
 #include "common/gl.hpp"
+#include "common/gpu_timers.hpp"
+#include "common/light_view.hpp"
 #include "common/prefilter.hpp"
 #include "common/scene.hpp"
 #include "common/settings.hpp"
@@ -15,35 +21,13 @@
 #include <glm/glm.hpp>
 
 #include <list>
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace wb {
 
-class Context;
-
-/// Where an exercise stands, as far as the running app can tell.
-enum class ExerciseState { Unknown, Implemented, NotImplemented, Failed };
-
-/// One row of the info panel.
-struct ExerciseStatus {
-  std::string id;                                ///< "01.3"
-  std::string title;                             ///< from the lab's exercises.json
-  ExerciseState state = ExerciseState::Unknown;  ///< last observed state
-  std::string message;                           ///< why it is not implemented or failed
-};
-
-/// The shadow-casting light of the current frame, for the debug views and the measurements.
-struct LightView {
-  Light light;            ///< the light as used this frame (after any lab setting changed it)
-  glm::mat4 viewProj{1};  ///< world → light clip space
-  GLuint depthMap = 0;    ///< the shadow map's depth texture (0 = none yet)
-  int mapSize = 0;        ///< its size in texels
-  int kernel = 1;         ///< the prefilter's width (filtered maps): the footprint the PCF reference uses
-  bool gaussian = false;  ///< the prefilter's weights: Gaussian, or a box
-};
+class App;
 
 /// Base class of every lab. Override the hooks; use the protected helpers.
 class Lab {
@@ -52,8 +36,15 @@ class Lab {
   /// exercise list come from its exercises.json, the one list shared with the tests and grading.
   explicit Lab(std::string defaultScene);
   virtual ~Lab();
-  /// Runs the lab with the shared command line; returns the process exit code.
-  int main(int argc, char** argv);
+  Lab(const Lab&) = delete;
+  Lab& operator=(const Lab&) = delete;
+
+  /// The lab's exercises and their states.
+  const ExerciseBoard& board() const { return board_; }
+  /// This lab's tunables: the same values the UI edits, --set assigns and --list-settings prints.
+  Settings& tunables() { return settings; }
+  /// The scene file used when none is named.
+  const std::string& defaultScene() const { return defaultScene_; }
 
  protected:
   /// Creates GL resources; called once after the context and scene exist. Read it as a table of contents.
@@ -70,7 +61,9 @@ class Lab {
   Program& loadProgram(std::vector<ShaderStage> stages, std::string defines = {});
   /// Registers a GLSL exercise and the expression that probes whether it is implemented; the
   /// expression is evaluated in a compute shader with `file` included and compared with WB_TODO.
-  void glslExercise(const std::string& id, const std::string& file, const std::string& probe);
+  void glslExercise(const std::string& id, const std::string& file, const std::string& probe) {
+    board_.addProbe(id, file, probe);
+  }
   /// Runs a C++ exercise call, recording Implemented / NotImplemented / Failed; true on success.
   template <class F>
   bool attempt(const std::string& id, F&& call) {
@@ -85,13 +78,22 @@ class Lab {
     }
     return false;
   }
-  /// Records an exercise's state (shown in the info panel and printed by headless runs).
-  void setStatus(const std::string& id, ExerciseState state, const std::string& message);
+  /// Records an exercise's state (shown in the info panel, printed and recorded by headless runs).
+  void setStatus(const std::string& id, ExerciseState state, const std::string& message) {
+    board_.set(id, state, message);
+  }
 
   /// PASS 1 of most labs: draws the scene's depth into `map` as seen through `lightViewProj` with
   /// `depthProgram` (setting u_lightViewProj and u_alphaCutoff), and shows `light` in the debug views.
   void renderShadowMap(const Program& depthProgram, const ShadowMap& map, const Light& light,
                        const glm::mat4& lightViewProj);
+  /// PASS 1 for a point light: the six faces of `map`, face k through `faceViewProj[k]` (set as
+  /// u_lightViewProj; set the rest first). Shows the cube in the debug views.
+  void renderShadowMap(const Program& depthProgram, const CubeShadowMap& map, const Light& light,
+                       const std::vector<glm::mat4>& faceViewProj, bool linearDistance);
+  /// PASS 1 for cascades: layer k of `map` through `layerViewProj[k]`. Shows every layer.
+  void renderShadowMap(const Program& depthProgram, const ShadowMapArray& map, const Light& light,
+                       const std::vector<glm::mat4>& layerViewProj);
   /// PASS 1 of the filterable techniques (ESM, VSM, EVSM): clears `map` to `far` (the stored value
   /// of depth 1), draws the scene with `writer` (u_lightViewProj and u_alphaCutoff set; set the
   /// rest first), prefilters it with `blur`, and shows `light` in the debug views. Times "shadow"
@@ -101,19 +103,21 @@ class Lab {
   /// PASS 2 of most labs: binds the frame target and sets what every camera pass reads: u_viewProj,
   /// u_lightViewProj, u_alphaCutoff, and `shadowMap` on texture unit 0 as u_shadowMap.
   void beginCameraPass(const Program& program, const glm::mat4& lightViewProj, GLuint shadowMap);
-  /// Binds the offscreen frame target (color + visibility + depth) and sets the viewport.
-  void bindFrameTarget() const;
+  /// Binds the offscreen frame target (colour, visibility, position, depth + stencil) and its viewport.
+  void bindFrameTarget() const { target_->bind(); }
   /// The frame target's size in pixels.
-  glm::ivec2 frameSize() const { return frameSize_; }
+  glm::ivec2 frameSize() const { return target_->size(); }
   /// The view-projection the scene is seen through: the camera, or the light in "view from light".
   glm::mat4 viewProj() const;
   /// The eye position matching viewProj().
   glm::vec3 viewPosition() const;
-  /// Tells the debug views about the light; call once per frame after building its matrix.
-  void showLight(const LightView& light) { light_ = light; }
+  /// Tells the debug views and measurements about the light and its map; the render helpers call it.
+  void showLight(const LightView& light) { light_ = light, lightShown_ = true; }
   /// The shadow map size chosen in the UI or by --set, clamped to GL_MAX_TEXTURE_SIZE.
   int shadowMapSize();
-  /// The constant depth bias of the shared debug controls.
+  /// Registers the shadow.bias setting (a constant depth bias), for labs whose shaders use it.
+  void useDepthBias(float initial = 0.004f);
+  /// The constant depth bias (useDepthBias() registers its setting).
   float depthBias() const { return bias_; }
   /// Texels of alpha-tested materials below this alpha are holes (setting alpha.cutoff); the exact
   /// visibility uses the same value.
@@ -121,21 +125,10 @@ class Lab {
   /// A warning shown in the info panel (and printed once on stderr).
   void warn(const std::string& message);
 
-  /// Times the GPU work of one pass until the returned object is destroyed (GL_TIME_ELAPSED).
-  class PassTimer {
-   public:
-    /// Begins a GL_TIME_ELAPSED query for the pass `name`.
-    PassTimer(Lab& lab, const char* name);
-    /// Ends the query; the result is collected when the GPU has it.
-    ~PassTimer();
-    PassTimer(const PassTimer&) = delete;
-    PassTimer& operator=(const PassTimer&) = delete;
-
-   private:
-    Lab& lab_;
-  };
+  /// Times a pass's GPU work until it is destroyed.
+  using PassTimer = GpuTimers::Scope;
   /// Starts timing a pass: `auto t = timePass("shadow");`.
-  PassTimer timePass(const char* name) { return PassTimer(*this, name); }
+  PassTimer timePass(const char* name) { return timers_->scope(name); }
 
   Settings settings;                   ///< this lab's tunables (register them in the constructor)
   Scene scene;                         ///< the loaded scene file
@@ -144,35 +137,33 @@ class Lab {
   int lightIndex = 0;                  ///< which scene light casts shadows (setting light.index)
 
  private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
-  void frame(float dt);
-  void drawShell();
-  void drawScene(bool programsOk);
-  void probeGlslExercises();
-  void writeOutputs();
-  void measure(bool report = true);
-  int sweep();
-
-  std::string number_, title_, defaultScene_;
-  glm::ivec2 frameSize_{960, 540};
+  friend class App;  // the host: it loads the scene, calls the hooks and reads the shared state
+  std::string defaultScene_;
+  ExerciseBoard board_;
+  FrameTarget* target_ = nullptr;  // the host's, while hosted
+  GpuTimers* timers_ = nullptr;
   LightView light_;
+  bool lightShown_ = false;
+  DebugOptions debug_;
   int mapSizeChoice_ = 1;  // index into 512..8192
   float bias_ = 0.004f;
+  bool biasRegistered_ = false;
   float alphaCutoff_ = 0.5f;
-  int debugView_ = 0;  // 0 = camera, 1 = light
-  bool showMap_ = false, showFrustum_ = false;
   int bookmark_ = 0;
   std::list<Program> programs_;
-  std::vector<ExerciseStatus> exercises_;
   std::vector<std::string> warnings_;
 };
 
-/// Constructs lab T and runs it: `int main(int c, char** v) { return wb::run<DepthMapLab>(c, v); }`.
+/// Constructs lab T and runs it with the shared command line in an App: `int main(int c, char** v)
+/// { return wb::run<DepthMapLab>(c, v); }`.
 template <class T>
-int run(int argc, char** argv) {
-  T lab;
-  return lab.main(argc, argv);
-}
+int run(int argc, char** argv);
 
 }  // namespace wb
+
+#include "common/app.hpp"
+
+template <class T>
+int wb::run(int argc, char** argv) {
+  return App::main(argc, argv, std::make_unique<T>());
+}

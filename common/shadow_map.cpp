@@ -7,20 +7,110 @@
 #include <cmath>
 
 namespace wb {
+namespace {
+
+// A depth texture of any shape: nearest filtering (graded paths use explicit taps) and a border of
+// depth 1, so a lookup outside the map reads "nothing blocks the light".
+Texture makeDepthTexture(GLenum target, int size, int layers) {
+  GLuint id = 0;
+  glCreateTextures(target, 1, &id);
+  if (target == GL_TEXTURE_2D_ARRAY)
+    glTextureStorage3D(id, 1, GL_DEPTH_COMPONENT32F, size, size, layers);
+  else
+    glTextureStorage2D(id, 1, GL_DEPTH_COMPONENT32F, size, size);
+  const GLenum wrap = target == GL_TEXTURE_CUBE_MAP ? GL_CLAMP_TO_EDGE : GL_CLAMP_TO_BORDER;
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  for (GLenum axis : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) glTextureParameteri(id, axis, wrap);
+  const float outside[4] = {1, 1, 1, 1};
+  glTextureParameterfv(id, GL_TEXTURE_BORDER_COLOR, outside);
+  return Texture(id);
+}
+
+// A depth-only framebuffer on one layer (face) of `texture`, or on all of them when layer < 0.
+Framebuffer depthFramebuffer(GLuint texture, int layer) {
+  GLuint id = 0;
+  glCreateFramebuffers(1, &id);
+  Framebuffer fbo(id);
+  glNamedFramebufferDrawBuffer(id, GL_NONE);
+  glNamedFramebufferReadBuffer(id, GL_NONE);
+  if (layer < 0)
+    glNamedFramebufferTexture(id, GL_DEPTH_ATTACHMENT, texture, 0);
+  else
+    glNamedFramebufferTextureLayer(id, GL_DEPTH_ATTACHMENT, texture, 0, layer);
+  const GLenum status = glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) throw Error("shadow map framebuffer incomplete (0x" + std::to_string(status) + ")");
+  return fbo;
+}
+
+void bindAndClear(const Framebuffer& fbo, int size) {
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+  glViewport(0, 0, size, size);
+  glClear(GL_DEPTH_BUFFER_BIT);
+}
+
+}  // namespace
 
 void ShadowMap::resize(int size) {
   if (size == size_ && texture_.id()) return;
   size_ = size;
-  texture_ = makeTexture2D(GL_DEPTH_COMPONENT32F, size, size, GL_NEAREST, GL_CLAMP_TO_BORDER);
-  const float outside[4] = {1, 1, 1, 1};
-  glTextureParameterfv(texture_.id(), GL_TEXTURE_BORDER_COLOR, outside);
-  fbo_ = makeFramebuffer({}, texture_.id());
+  texture_ = makeDepthTexture(GL_TEXTURE_2D, size, 1);
+  fbo_ = depthFramebuffer(texture_.id(), -1);
 }
 
-void ShadowMap::begin() const {
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-  glViewport(0, 0, size_, size_);
-  glClear(GL_DEPTH_BUFFER_BIT);
+void ShadowMap::begin() const { bindAndClear(fbo_, size_); }
+
+LightView ShadowMap::describe(const Light& light, const glm::mat4& viewProj) const {
+  LightView v;
+  v.light = light, v.viewProj = {viewProj}, v.target = GL_TEXTURE_2D, v.texture = texture(), v.size = size_;
+  return v;
+}
+
+void CubeShadowMap::resize(int size) {
+  if (size == size_ && texture_.id()) return;
+  size_ = size;
+  texture_ = makeDepthTexture(GL_TEXTURE_CUBE_MAP, size, 6);
+  layeredFbo_ = depthFramebuffer(texture_.id(), -1);
+  fbo_ = depthFramebuffer(texture_.id(), 0);
+}
+
+void CubeShadowMap::begin(int face) const {
+  if (face < 0 || face > 5) throw Error("CubeShadowMap::begin: face " + std::to_string(face) + " is not in 0..5");
+  glNamedFramebufferTextureLayer(fbo_.id(), GL_DEPTH_ATTACHMENT, texture_.id(), 0, face);
+  bindAndClear(fbo_, size_);
+}
+
+void CubeShadowMap::beginLayered() const { bindAndClear(layeredFbo_, size_); }
+
+LightView CubeShadowMap::describe(const Light& light, const std::vector<glm::mat4>& faceViewProj,
+                                  bool linearDistance) const {
+  LightView v;
+  v.light = light, v.viewProj = faceViewProj, v.target = GL_TEXTURE_CUBE_MAP, v.texture = texture(), v.size = size_;
+  v.linearDistance = linearDistance;
+  return v;
+}
+
+void ShadowMapArray::resize(int size, int layers) {
+  if (size == size_ && layers == layers_ && texture_.id()) return;
+  size_ = size, layers_ = layers;
+  texture_ = makeDepthTexture(GL_TEXTURE_2D_ARRAY, size, layers);
+  fbos_.clear();
+  for (int k = 0; k < layers; ++k) fbos_.push_back(depthFramebuffer(texture_.id(), k));
+  layeredFbo_ = depthFramebuffer(texture_.id(), -1);
+}
+
+void ShadowMapArray::begin(int layer) const {
+  if (layer < 0 || layer >= layers_)
+    throw Error("ShadowMapArray::begin: layer " + std::to_string(layer) + " is not in 0.." + std::to_string(layers_ - 1));
+  bindAndClear(fbos_[size_t(layer)], size_);
+}
+
+void ShadowMapArray::beginLayered() const { bindAndClear(layeredFbo_, size_); }
+
+LightView ShadowMapArray::describe(const Light& light, const std::vector<glm::mat4>& layerViewProj) const {
+  LightView v;
+  v.light = light, v.viewProj = layerViewProj, v.target = GL_TEXTURE_2D_ARRAY, v.texture = texture(), v.size = size_;
+  return v;
 }
 
 glm::mat4 lightViewProj(const Light& light, const Scene& scene) {

@@ -16,7 +16,7 @@ namespace {
 
 class DepthMapLab : public wb::Lab {
  public:
-  DepthMapLab() : Lab("scenes/depth_map.json") {}
+  DepthMapLab() : Lab("scenes/depth_map.json") { useDepthBias(); }
 
  protected:
   void init() override {

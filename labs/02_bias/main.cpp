@@ -19,6 +19,7 @@ class BiasLab : public wb::Lab {
   enum Method { None, Constant, Slope, PolygonOffset, FrontFaces, NormalOffset, ReceiverPlane };
 
   BiasLab() : Lab("scenes/bias_grazing.json") {
+    useDepthBias();
     settings.addChoice(
         "bias.method", method,
         {"none", "constant", "slope", "polygon_offset", "front_faces", "normal_offset", "receiver_plane"},

@@ -22,7 +22,7 @@ class PcfLab : public wb::Lab {
     settings.add("pcf.sigma", sigma, 0.25f, 4.0f, "gaussian: standard deviation in texels");
     settings.addChoice("pcf.poisson_count", poissonCount, {"16", "32", "64"}, "poisson: taps");
     settings.add("pcf.poisson_radius", poissonRadius, 0.5f, 8.0f, "poisson: disk radius in texels");
-    settings.assign("shadow.bias=0.006");  // wider kernels reach further across sloped receivers
+    useDepthBias(0.006f);  // wider kernels reach further across sloped receivers
   }
 
  protected:

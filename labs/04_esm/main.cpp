@@ -23,6 +23,7 @@ class EsmLab : public wb::Lab {
     settings.add("esm.fallback", fallback, "fall back to 3x3 PCF where ESM's assumption fails (04.5)");
     settings.add("esm.epsilon", epsilon, 0.0f, 1.0f, "fallback threshold: ESM value above 1 + epsilon");
     prefilter.addTo(settings);
+    useDepthBias();  // only the PCF fallback (04.5) compares depths
   }
 
  protected:

@@ -1,0 +1,343 @@
+#include "common/app.hpp"
+
+#include "common/context.hpp"
+#include "common/image.hpp"
+#include "common/lab.hpp"
+#include "common/variant.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <iostream>
+
+namespace fs = std::filesystem;
+
+namespace wb {
+
+// Dear ImGui with its GLFW and OpenGL 3 backends, in the canonical order; shut down in reverse.
+struct App::ImGuiLayer {
+  explicit ImGuiLayer(GLFWwindow* window) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 450 core");
+  }
+  ~ImGuiLayer() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+};
+
+void App::configureSettings(Lab& lab, const Options& o) {
+  for (const auto& s : o.sets) lab.settings.assign(s);
+  if (o.compare.on) {  // both values must be valid before anything renders
+    const std::string keep = lab.settings.value(o.compare.key);
+    for (const auto& v : {o.compare.a, o.compare.b}) lab.settings.assign(o.compare.key + "=" + v);
+    lab.settings.assign(o.compare.key + "=" + keep);
+  }
+  for (const auto& [key, values] : o.sweeps)  // every swept value, before any rendering
+    for (const auto& v : values) lab.settings.assign(key + "=" + v);
+  for (const auto& s : o.sets) lab.settings.assign(s);
+}
+
+void App::loadScene(Lab& lab, const Options& o) {
+  const fs::path path = o.scene.empty() ? fs::path(variant::kSourceDir) / lab.defaultScene() : fs::path(o.scene);
+  lab.scene = Scene::load(path);
+  if (lab.lightIndex >= int(lab.scene.lights.size()))
+    throw UsageError("light.index=" + std::to_string(lab.lightIndex) + " but " + path.string() + " has " +
+                     std::to_string(lab.scene.lights.size()) + " light(s)");
+  lab.camera.pose = lab.scene.cameras[std::min<size_t>(size_t(lab.bookmark_), lab.scene.cameras.size() - 1)];
+}
+
+int App::main(int argc, char** argv, std::unique_ptr<Lab> lab) {
+  const std::string exe = fs::path(argv[0]).filename().string();
+  RunRecord record;
+  record.set("lab", lab->board().number());
+  record.set("variant", variant::kName);
+  Options options;
+  auto fail = [&](int code, const char* status, const std::string& message) {
+    std::fprintf(stderr, "%s: %s\n", exe.c_str(), message.c_str());
+    record.set("status", status);
+    record.set("error", message);
+    if (!options.record.empty()) record.write(options.record);
+    return code;
+  };
+  try {
+    options = parseCommandLine(argc, argv);
+    if (options.help) {
+      std::printf("%s", usageText(exe, lab->defaultScene()).c_str());
+      return 0;
+    }
+    configureSettings(*lab, options);
+    if (options.listSettings) {
+      std::printf("settings of lab %s (%s):\n", lab->board().number().c_str(), lab->board().title().c_str());
+      lab->settings.list(std::cout);
+      return 0;
+    }
+    loadScene(*lab, options);
+    const std::string title = "Lab " + lab->board().number() + ": " + lab->board().title();
+    App app(options, title);
+    app.host(std::move(lab));
+    if (!options.sweeps.empty()) return app.sweep();
+    app.loop();
+    app.finish(record);
+    record.set("status", "ok");
+    if (!options.record.empty() && !record.write(options.record))
+      return fail(1, "error", "cannot write --record file '" + options.record + "'");
+    return 0;
+  } catch (const UsageError& e) {
+    return fail(2, "usage_error", e.what());
+  } catch (const ContextError& e) {
+    return fail(3, "context_error", e.what());
+  } catch (const std::exception& e) {
+    return fail(1, "error", e.what());
+  }
+}
+
+App::App(const Options& options, const std::string& title) : options_(options) {
+  if (options_.headless && options_.screenshot.empty() && options_.visibility.empty() && options_.bench.empty() &&
+      !options_.metrics && options_.record.empty())
+    options_.screenshot = title.substr(0, 3) == "Lab" ? "lab" + title.substr(4, 2) + ".png" : "lab.png";
+  if (options_.frames < 0 && (options_.headless || !options_.bench.empty()))
+    options_.frames = options_.bench.empty() ? 1 : 60;
+  wall_.warmup = options_.bench.empty() ? 0 : std::min(10, options_.frames / 4);
+  frameSize_ = options_.size;
+  shell_.compare = options_.compare;
+#ifndef NDEBUG
+  strictGl_ = true;
+#endif
+  if (const char* strict = std::getenv("WB_STRICT_GL")) strictGl_ = std::string(strict) != "0";
+  ctx_ = Context::create({options_.headless, frameSize_.x, frameSize_.y, title, true});
+  if (!options_.bench.empty() && !options_.headless) glfwSwapInterval(0);  // measure, do not wait for vsync
+  if (!ctx_->headless()) imgui_ = std::make_unique<ImGuiLayer>(ctx_->window());
+  debug_ = std::make_unique<DebugViews>();
+}
+
+App::~App() = default;
+
+void App::host(std::unique_ptr<Lab> lab) {
+  lab_.reset();  // the previous lab's GL objects go while the context lives
+  measurement_ = Measurement();
+  heatmap_.reset();
+  shell_.measured.clear(), shell_.showHeatmap = false;
+  lab->target_ = &target_, lab->timers_ = &timers_;
+  target_.resize(frameSize_);
+  lab->gpuScene = std::make_unique<GpuScene>(lab->scene);
+  lab_ = std::move(lab);
+  if (ctx_->window()) {
+    const std::string title = "Lab " + lab_->board().number() + ": " + lab_->board().title();
+    glfwSetWindowTitle(ctx_->window(), title.c_str());
+  }
+  lab_->init();
+  lab_->board_.probe();
+}
+
+void App::loop() {
+  auto last = std::chrono::steady_clock::now();
+  while (!ctx_->shouldClose() && (options_.frames < 0 || frameIndex_ < options_.frames)) {
+    const auto now = std::chrono::steady_clock::now();
+    const float dt = options_.headless ? 1.0f / 60 : std::chrono::duration<float>(now - last).count();
+    last = now;
+    frame(dt);
+    if (!options_.bench.empty() || options_.headless) glFinish();
+    const auto end = std::chrono::steady_clock::now();
+    const bool record = frameIndex_ >= wall_.warmup;
+    if (record && frameIndex_ > 0)
+      wall_.sumMs += std::chrono::duration<double, std::milli>(end - now).count(), ++wall_.frames;
+    timers_.collect(ctx_->headless(), record);
+    for (const auto& e : takeGlErrors()) {
+      if (strictGl_) throw Error("OpenGL error: " + e);
+      lab_->warn("OpenGL error: " + e);
+    }
+    if (options_.metrics && imgui_ && frameIndex_ == 0) measureNow(true);  // a window shows it as an overlay
+    ++frameIndex_;
+  }
+}
+
+void App::frame(float dt) {
+  if (imgui_) beginUiFrame();
+  hotReload();
+  lab_->update(dt);
+  target_.resize(frameSize_);
+  drawLab();
+  // Shared debug views, drawn into the frame target so screenshots and headless runs show them.
+  debug_->draw(lab_->debug_, lab_->light_, lab_->viewProj(), target_, shell_.showHeatmap ? heatmap_.id() : 0);
+  if (imgui_) presentWindow();
+}
+
+void App::beginUiFrame() {
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  GLFWwindow* win = ctx_->window();
+  const ImGuiIO& io = ImGui::GetIO();
+  glm::dvec2 mouse;
+  glfwGetCursorPos(win, &mouse.x, &mouse.y);
+  if (!io.WantCaptureMouse) {  // never steal the mouse from a widget
+    if (glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS && mouse != lastMouse_) {
+      lab_->camera.orbit(float(mouse.x - lastMouse_.x), float(mouse.y - lastMouse_.y));
+      shell_.showHeatmap = false;  // it was measured for the old view
+    }
+    lab_->camera.zoom(io.MouseWheel);
+  }
+  lastMouse_ = mouse;
+  if (!io.WantCaptureKeyboard) handleKeys();
+  frameSize_ = glm::max(ctx_->framebufferSize(), glm::ivec2(16));
+}
+
+void App::handleKeys() {
+  GLFWwindow* win = ctx_->window();
+  auto pressed = [&](int key) {  // true once per press, so holding a key does not repeat
+    const bool down = glfwGetKey(win, key) == GLFW_PRESS, was = keyDown_[key];
+    keyDown_[key] = down;
+    return down && !was;
+  };
+  Lab& lab = *lab_;
+  for (int k = 0; k < 9; ++k)
+    if (pressed(GLFW_KEY_1 + k) && k < int(lab.scene.cameras.size())) lab.bookmark_ = k, lab.camera.pose = lab.scene.cameras[size_t(k)];
+  if (pressed(GLFW_KEY_F12) || pressed(GLFW_KEY_P)) screenshotRequested_ = true;
+  if (pressed(GLFW_KEY_H)) shell_.hidePanels = !shell_.hidePanels;
+}
+
+void App::hotReload() {
+  // A changed file rebuilds its programs; a failed build keeps the last good program.
+  if (frameIndex_ % 15 != 0) return;
+  for (auto& p : lab_->programs_) p.reloadIfChanged();
+  if (lab_->board_.probedFilesChanged()) lab_->board_.probe();
+}
+
+void App::drawLab() {
+  Lab& lab = *lab_;
+  const bool programsOk =
+      std::all_of(lab.programs_.begin(), lab.programs_.end(), [](const Program& p) { return p.ok(); });
+  if (!programsOk && ctx_->headless())
+    for (const auto& p : lab.programs_)
+      if (!p.ok()) throw Error(p.error());
+  // The scene: once, or in split-screen comparison twice (left half with value A, right with B).
+  split_.render(
+      target_, lab.settings, shell_.compare,
+      [&] {
+        target_.clear();
+        glEnable(GL_DEPTH_TEST);
+        if (programsOk) lab.render();
+      },
+      [&](int side) { sides_[side] = lab.light_; });
+}
+
+void App::presentWindow() {
+  const glm::ivec2 size = target_.size();
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, target_.framebuffer());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glBlitFramebuffer(0, 0, size.x, size.y, 0, 0, size.x, size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, size.x, size.y);
+  Lab& lab = *lab_;
+  const int bookmark = lab.bookmark_;
+  drawShell({lab.board_, timers_, lab.programs_, lab.warnings_, lab.settings, size, [&] { lab.ui(); }}, shell_);
+  if (lab.bookmark_ != bookmark && lab.bookmark_ < int(lab.scene.cameras.size()))
+    lab.camera.pose = lab.scene.cameras[size_t(lab.bookmark_)];
+  lab.lightIndex = std::min(lab.lightIndex, int(lab.scene.lights.size()) - 1);
+  if (shell_.measureRequested) shell_.measureRequested = false, measureNow(true);
+  ImGui::Render();
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  // In a window, --screenshot captures the last frame as the user sees it, UI included.
+  const bool lastFrame = options_.frames > 0 && frameIndex_ == options_.frames - 1 && !options_.screenshot.empty();
+  if (screenshotRequested_ || lastFrame) {
+    screenshotRequested_ = false;
+    char stamp[32];
+    const std::time_t t = std::time(nullptr);
+    std::strftime(stamp, sizeof stamp, "%Y%m%d_%H%M%S", std::localtime(&t));
+    saveWindowScreenshot(lastFrame ? options_.screenshot
+                                   : "screenshots/lab" + lab.board().number() + "_" + stamp + ".png");
+  }
+  ctx_->endFrame();
+}
+
+void App::saveWindowScreenshot(const std::string& path) {
+  const glm::ivec2 size = target_.size();
+  std::vector<uint8_t> px(size_t(size.x) * size_t(size.y) * 4);
+  glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
+  writePng(path, size.x, size.y, px);
+  shell_.lastScreenshot = path;
+  written_.emplace_back("screenshot", path);
+  say("wrote " + fs::absolute(path).string());
+}
+
+MeasureResult App::measureNow(bool report) {
+  Lab& lab = *lab_;
+  const Light& sceneLight = lab.lightShown_ ? lab.light_.light : lab.scene.lights[size_t(lab.lightIndex)];
+  CompareChoice split = shell_.compare;
+  split.on = split.on && !split.key.empty();
+  const MeasureResult r =
+      measurement_.measure({target_, lab.scene, lab.alphaCutoff_, lab.light_, sceneLight, split, sides_});
+  shell_.measured = r.text;
+  lastMeasure_ = r;
+  if (!report) return r;
+  const glm::ivec2 size = target_.size();
+  if (imgui_) {
+    heatmap_ = makeTexture2D(GL_RGBA8, size.x, size.y);
+    glTextureSubImage2D(heatmap_.id(), 0, 0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, r.heatmap.data());
+    shell_.showHeatmap = true;
+  }
+  say(r.text);
+  if (!options_.heatmap.empty()) {
+    writePng(options_.heatmap, size.x, size.y, r.heatmap);
+    written_.emplace_back("heatmap", options_.heatmap);
+    say("wrote " + fs::absolute(options_.heatmap).string());
+  }
+  return r;
+}
+
+int App::sweep() {
+  return runSweep(
+      options_, lab_->settings, timers_,
+      [&] {
+        frame(1.0f / 60);
+        glFinish();
+      },
+      [&] { return measureNow(false); });
+}
+
+void App::finish(RunRecord& record) {
+  if (options_.metrics && !imgui_) measureNow(true);
+  const glm::ivec2 size = target_.size();
+  if (!options_.screenshot.empty() && !imgui_) {  // (a window writes its own, with the UI)
+    writePng(options_.screenshot, size.x, size.y, target_.readColor());
+    written_.emplace_back("screenshot", options_.screenshot);
+    say("wrote " + fs::absolute(options_.screenshot).string());
+  }
+  if (!options_.visibility.empty()) {
+    writePfm(options_.visibility, target_.readVisibility());
+    written_.emplace_back("visibility", options_.visibility);
+    say("wrote " + fs::absolute(options_.visibility).string());
+  }
+  if (!options_.bench.empty()) {
+    writeBench(options_.bench, lab_->board().number(), size, timers_, wall_, !options_.quiet);
+    written_.emplace_back("bench", options_.bench);
+  }
+  lab_->board().printUnfinished();
+  record.set("title", lab_->board().title());
+  record.set("renderer", Context::renderer());
+  record.set("size", {size.x, size.y});
+  record.set("frames", frameIndex_);
+  record.set("exercises", lab_->board().toJson());
+  record.set("measurement", lastMeasure_ ? lastMeasure_->toJson() : nlohmann::json());
+  record.set("warnings", lab_->warnings_);
+  for (const auto& [kind, path] : written_) record.addOutput(kind, path);
+}
+
+void App::say(const std::string& text) const {
+  if (!options_.quiet) std::printf("%s\n", text.c_str());
+}
+
+}  // namespace wb

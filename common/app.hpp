@@ -1,0 +1,96 @@
+/// @file app.hpp
+/// The app that hosts a lab: the GL context (a window, or EGL surfaceless when headless), the ImGui
+/// shell, the frame loop with input and hot reload, and the run's outputs (screenshot, visibility,
+/// bench, measurement, the JSON record). A lab is an object the app hosts, so another program (a
+/// showcase of every technique) can host one lab after another in the same window.
+#pragma once
+#include "common/bench.hpp"
+#include "common/command_line.hpp"
+#include "common/debug_views.hpp"
+#include "common/frame_target.hpp"
+#include "common/gpu_timers.hpp"
+#include "common/measurement.hpp"
+#include "common/run_record.hpp"
+#include "common/shell_ui.hpp"
+#include "common/split_screen.hpp"
+
+#include <glm/glm.hpp>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace wb {
+
+class Context;
+class Lab;
+
+/// Hosts labs in one context; see the file comment.
+class App {
+ public:
+  /// Runs `lab` with the shared command line: parses it, configures the lab, opens the context,
+  /// hosts the lab and renders (or sweeps), then writes the outputs and the record. Returns the
+  /// exit code: 0 done, 1 failed, 2 bad input, 3 no OpenGL 4.5 context.
+  static int main(int argc, char** argv, std::unique_ptr<Lab> lab);
+  /// Applies the command line's --set, checks its --compare and --sweep values (CPU only, so bad
+  /// input fails before any window opens); throws wb::UsageError.
+  static void configureSettings(Lab& lab, const Options& options);
+  /// Loads the lab's scene (options.scene, or its default) and camera bookmark; throws wb::UsageError.
+  static void loadScene(Lab& lab, const Options& options);
+
+  /// Creates the context and the ImGui shell (in a window); throws wb::ContextError.
+  App(const Options& options, const std::string& title);
+  ~App();
+  App(const App&) = delete;
+  App& operator=(const App&) = delete;
+
+  /// Hosts a configured lab with its scene loaded: the previous lab (if any) is destroyed first,
+  /// while the context still lives; then the lab's scene goes to the GPU and init() runs.
+  void host(std::unique_ptr<Lab> lab);
+  /// Renders frames until the window closes or options.frames have been drawn.
+  void loop();
+  /// Draws one frame of the hosted lab (`dt` seconds after the last one).
+  void frame(float dt);
+  /// Runs --sweep; returns the exit code.
+  int sweep();
+  /// Measures after the loop if asked, writes the requested files, and fills `record`.
+  void finish(RunRecord& record);
+
+ private:
+  void beginUiFrame();
+  void handleKeys();
+  void hotReload();
+  void drawLab();
+  void presentWindow();
+  void saveWindowScreenshot(const std::string& path);
+  MeasureResult measureNow(bool report);
+  void say(const std::string& text) const;
+
+  Options options_;
+  std::unique_ptr<Context> ctx_;  // declared first: destroyed last, after every GL object below
+  struct ImGuiLayer;
+  std::unique_ptr<ImGuiLayer> imgui_;
+  FrameTarget target_;
+  GpuTimers timers_;
+  std::unique_ptr<DebugViews> debug_;
+  SplitScreen split_;
+  Measurement measurement_;
+  Texture heatmap_;
+  std::unique_ptr<Lab> lab_;  // declared last: destroyed first
+
+  ShellState shell_;
+  LightView sides_[2];
+  std::optional<MeasureResult> lastMeasure_;
+  std::vector<std::pair<std::string, std::string>> written_;  // (kind, path) of files written
+  glm::ivec2 frameSize_{960, 540};
+  int frameIndex_ = 0;
+  WallClock wall_;
+  bool strictGl_ = false, screenshotRequested_ = false;
+  glm::dvec2 lastMouse_{0};
+  std::map<int, bool> keyDown_;
+};
+
+}  // namespace wb

@@ -1,0 +1,136 @@
+#include "common/bench.hpp"
+
+#include "common/context.hpp"
+#include "common/error.hpp"
+#include "common/settings.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+namespace wb {
+namespace {
+
+template <typename... Args>
+std::string strf(const char* format, Args... args) {
+  char text[128];
+  std::snprintf(text, sizeof text, format, args...);
+  return text;
+}
+
+// One row of the sweep table, printed as Markdown and (when open) written as CSV.
+void row(const std::vector<std::string>& cells, std::ofstream& csv) {
+  std::string line = "|";
+  for (const auto& c : cells) line += " " + c + " |";
+  std::printf("%s\n", line.c_str());
+  if (!csv.is_open()) return;
+  for (size_t c = 0; c < cells.size(); ++c) csv << (c ? "," : "") << cells[c];
+  csv << "\n";
+}
+
+std::vector<std::string> header(const Options& o, const std::vector<std::string>& passes) {
+  std::vector<std::string> h;
+  for (const auto& sw : o.sweeps) h.push_back(sw.first);
+  if (o.metrics)
+    h.insert(h.end(), {"acne_%", "leak_%", "contact_gap_texels", "shadow_light_%", "pcf_diff_%", "pcf_lighter_%"});
+  for (const auto& p : passes) h.push_back(p + "_gpu_ms");
+  h.emplace_back("frame_ms");
+  return h;
+}
+
+std::vector<std::string> measuredCells(const MeasureResult& m) {
+  const bool ref = m.reference.pixels > 0;
+  return {strf("%.2f", 100 * m.metrics.acneRate()),
+          strf("%.2f", 100 * m.metrics.leakRate()),
+          m.gapTexels < 0 ? "n/a" : strf("%.1f", m.gapTexels),
+          strf("%.2f", 100 * m.metrics.meanShadowLight()),
+          ref ? strf("%.2f", 100 * m.reference.meanAbs()) : "n/a",
+          ref ? strf("%.2f", 100 * m.reference.lighterRate()) : "n/a"};
+}
+
+}  // namespace
+
+void writeBench(const std::string& path, const std::string& lab, glm::ivec2 size, const GpuTimers& timers,
+                const WallClock& wall, bool print) {
+  std::ofstream csv(path);
+  if (!csv) throw UsageError("cannot write --bench file '" + path + "'");
+  const std::string renderer = Context::renderer(), where = std::to_string(size.x) + "x" + std::to_string(size.y);
+  csv << "lab,renderer,size,pass,gpu_ms_mean,gpu_ms_min,gpu_ms_max,frames\n";
+  if (print) {
+    std::printf("lab %s on %s, %s, %d frames measured after %d warm-up\n", lab.c_str(), renderer.c_str(),
+                where.c_str(), wall.frames, wall.warmup);
+    std::printf("  %-14s %10s %10s %10s\n", "pass", "mean ms", "min ms", "max ms");
+  }
+  for (const auto& [name, s] : timers.passes()) {
+    csv << "lab" << lab << ",\"" << renderer << "\"," << where << "," << name << "," << s.mean() << "," << s.min << ","
+        << s.max << "," << s.count << "\n";
+    if (print) std::printf("  %-14s %10.3f %10.3f %10.3f\n", name.c_str(), s.mean(), s.min, s.max);
+  }
+  const double frameMs = wall.meanMs();
+  csv << "lab" << lab << ",\"" << renderer << "\"," << where << ",frame_wall," << frameMs << ",,," << wall.frames
+      << "\n";
+  if (print)
+    std::printf("  %-14s %10.3f   => %.1f fps\nwrote %s\n", "frame (wall)", frameMs, frameMs > 0 ? 1000 / frameMs : 0.0,
+                std::filesystem::absolute(path).string().c_str());
+}
+
+int runSweep(const Options& o, Settings& settings, GpuTimers& timers, const std::function<void()>& frame,
+             const std::function<MeasureResult()>& measure) {
+  const int timed = std::max(1, o.frames);
+  std::ofstream csv;
+  if (!o.sweepCsv.empty()) {
+    csv.open(o.sweepCsv);
+    if (!csv) throw UsageError("cannot write --sweep-csv file '" + o.sweepCsv + "'");
+  }
+  size_t total = 1;
+  for (const auto& sw : o.sweeps) total *= sw.second.size();
+  std::vector<std::string> passNames;
+  for (size_t n = 0; n < total; ++n) {
+    std::vector<std::string> cells;
+    size_t k = n;
+    for (auto it = o.sweeps.rbegin(); it != o.sweeps.rend(); ++it) {  // the last key varies fastest
+      const std::string& v = it->second[k % it->second.size()];
+      settings.assign(it->first + "=" + v);
+      cells.insert(cells.begin(), v);
+      k /= it->second.size();
+    }
+    std::fprintf(stderr, "\rsweep %zu/%zu ", n + 1, total);
+    frame();  // warm-up: allocations, first use of a program
+    timers.collect(true, false);
+    timers.resetStats();
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int f = 0; f < timed; ++f) {
+      frame();
+      timers.collect(true, true);
+    }
+    const double wall =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / timed;
+    if (n == 0) {  // the header, once the passes are known
+      for (const auto& p : timers.passes()) passNames.push_back(p.first);
+      const auto h = header(o, passNames);
+      row(h, csv);
+      std::string rule = "|";
+      for (size_t c = 0; c < h.size(); ++c) rule += "---|";
+      std::printf("%s\n", rule.c_str());
+    }
+    if (o.metrics) {
+      const auto m = measuredCells(measure());
+      cells.insert(cells.end(), m.begin(), m.end());
+    }
+    for (const auto& p : passNames) {
+      const PassStats* st = nullptr;
+      for (const auto& [name, s] : timers.passes())
+        if (name == p) st = &s;
+      cells.push_back(st && st->count ? strf("%.3f", st->mean()) : "-");
+    }
+    cells.push_back(strf("%.2f", wall));
+    row(cells, csv);
+  }
+  std::fprintf(stderr, "\r%*s\r", 24, "");
+  if (csv.is_open()) std::printf("wrote %s\n", std::filesystem::absolute(o.sweepCsv).string().c_str());
+  return 0;
+}
+
+}  // namespace wb

@@ -1,0 +1,128 @@
+#include "common/command_line.hpp"
+
+#include "common/error.hpp"
+
+#include <sstream>
+
+namespace wb {
+namespace {
+
+// The one table: name, the value's placeholder (nullptr for a flag), help, and what it does.
+struct OptionSpec {
+  const char* name;
+  const char* value;
+  const char* help;
+  void (*apply)(Options&, const std::string&);
+};
+
+glm::ivec2 parseSize(const std::string& v) {
+  glm::ivec2 s{0};
+  char x = 0, extra = 0;
+  std::istringstream in(v);
+  if (!(in >> s.x >> x >> s.y) || x != 'x' || in >> extra || s.x < 16 || s.y < 16 || s.x > 8192 || s.y > 8192)
+    throw UsageError("bad --size '" + v + "': expected WxH between 16x16 and 8192x8192, e.g. 960x540");
+  return s;
+}
+
+int parseFrames(const std::string& v) {
+  try {
+    size_t used = 0;
+    const int n = std::stoi(v, &used);
+    if (used == v.size() && n >= 1) return n;
+  } catch (...) {
+  }
+  throw UsageError("bad --frames '" + v + "': expected a whole number of at least 1");
+}
+
+std::pair<std::string, std::vector<std::string>> parseSweep(const std::string& v) {
+  const auto eq = v.find('=');
+  if (eq == std::string::npos || eq + 1 >= v.size()) throw UsageError("--sweep expects key=v1,v2,..., got '" + v + "'");
+  std::vector<std::string> values;
+  std::stringstream list(v.substr(eq + 1));
+  for (std::string item; std::getline(list, item, ',');) values.push_back(item);
+  return {v.substr(0, eq), values};
+}
+
+CompareChoice parseCompare(const std::string& v) {
+  const auto eq = v.find('='), comma = v.find(',', eq == std::string::npos ? 0 : eq);
+  if (eq == std::string::npos || comma == std::string::npos || v.find(',', comma + 1) != std::string::npos)
+    throw UsageError("--compare expects key=a,b (two values of one setting), got '" + v + "'");
+  return {true, v.substr(0, eq), v.substr(eq + 1, comma - eq - 1), v.substr(comma + 1)};
+}
+
+const OptionSpec kOptions[] = {
+    {"--headless", nullptr, "render without a window (EGL, Mesa llvmpipe); writes a PNG if no output is named",
+     [](Options& o, const std::string&) { o.headless = true; }},
+    {"--scene", "FILE", "scene file (default %SCENE%)", [](Options& o, const std::string& v) { o.scene = v; }},
+    {"--size", "WxH", "frame size in pixels (default 960x540)",
+     [](Options& o, const std::string& v) { o.size = parseSize(v); }},
+    {"--set", "key=value", "change a setting; --list-settings shows them all",
+     [](Options& o, const std::string& v) { o.sets.push_back(v); }},
+    {"--frames", "N", "frames to render before writing outputs and exiting",
+     [](Options& o, const std::string& v) { o.frames = parseFrames(v); }},
+    {"--screenshot", "F.png", "write the final frame as PNG",
+     [](Options& o, const std::string& v) { o.screenshot = v; }},
+    {"--dump-visibility", "F.pfm", "write per-pixel light visibility (1 lit, 0 shadowed) as a float PFM",
+     [](Options& o, const std::string& v) { o.visibility = v; }},
+    {"--bench", "F.csv", "time every pass (GPU ms) and the frame (wall ms) over the frames",
+     [](Options& o, const std::string& v) { o.bench = v; }},
+    {"--metrics", nullptr, "compare with exact (ray-cast) visibility: acne rate and light leak",
+     [](Options& o, const std::string&) { o.metrics = true; }},
+    {"--heatmap", "F.png", "with --metrics: write acne (red) and leaks (blue) as a picture",
+     [](Options& o, const std::string& v) { o.heatmap = v, o.metrics = true; }},
+    {"--sweep", "key=a,b,...",
+     "time every combination of the listed settings (repeatable; with --metrics also measure it)",
+     [](Options& o, const std::string& v) { o.sweeps.push_back(parseSweep(v)); }},
+    {"--sweep-csv", "F.csv", "with --sweep: also write the table as CSV",
+     [](Options& o, const std::string& v) { o.sweepCsv = v; }},
+    {"--compare", "key=a,b", "split screen: the left half with key=a, the right half with key=b",
+     [](Options& o, const std::string& v) { o.compare = parseCompare(v); }},
+    {"--record", "F.json", "write the run's result as JSON: exercise states, measurements, files written",
+     [](Options& o, const std::string& v) { o.record = v; }},
+    {"--quiet", nullptr, "print nothing for people on stdout (warnings and errors still go to stderr)",
+     [](Options& o, const std::string&) { o.quiet = true; }},
+    {"--list-settings", nullptr, "print every setting with its value, range and help, and exit",
+     [](Options& o, const std::string&) { o.listSettings = true; }},
+    {"--help", nullptr, "print this text and exit", [](Options& o, const std::string&) { o.help = true; }},
+};
+
+std::string acceptedNames() {
+  std::string names;
+  for (const auto& o : kOptions) names += std::string(names.empty() ? "" : " ") + o.name;
+  return names;
+}
+
+}  // namespace
+
+Options parseCommandLine(int argc, const char* const* argv) {
+  Options options;
+  for (int a = 1; a < argc; ++a) {
+    std::string arg = argv[a];
+    if (arg == "-h") arg = "--help";
+    const OptionSpec* spec = nullptr;
+    for (const auto& o : kOptions)
+      if (arg == o.name) spec = &o;
+    if (!spec) throw UsageError("unknown option '" + arg + "'; accepted: " + acceptedNames());
+    std::string value;
+    if (spec->value) {
+      if (a + 1 >= argc) throw UsageError(arg + " needs a value (" + spec->value + "); see --help");
+      value = argv[++a];
+    }
+    spec->apply(options, value);
+  }
+  return options;
+}
+
+std::string usageText(const std::string& exe, const std::string& defaultScene) {
+  std::string text = "usage: " + exe + " [options]\n";
+  for (const auto& o : kOptions) {
+    std::string left = std::string("  ") + o.name + (o.value ? std::string(" ") + o.value : "");
+    std::string help = o.help;
+    if (const auto at = help.find("%SCENE%"); at != std::string::npos) help.replace(at, 7, defaultScene);
+    left.resize(std::max<size_t>(left.size() + 2, 30), ' ');
+    text += left + help + "\n";
+  }
+  return text;
+}
+
+}  // namespace wb

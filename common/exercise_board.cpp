@@ -1,0 +1,95 @@
+#include "common/exercise_board.hpp"
+
+#include "common/error.hpp"
+#include "common/glsl_harness.hpp"
+#include "common/shader.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+
+namespace fs = std::filesystem;
+
+namespace wb {
+
+const char* stateName(ExerciseState state) {
+  switch (state) {
+    case ExerciseState::Implemented:
+      return "implemented";
+    case ExerciseState::NotImplemented:
+      return "not_implemented";
+    case ExerciseState::Failed:
+      return "failed";
+    case ExerciseState::Unknown:
+      break;
+  }
+  return "unknown";
+}
+
+ExerciseBoard::ExerciseBoard(const fs::path& manifest) {
+  try {
+    auto j = nlohmann::json::parse(readFile(manifest));
+    number_ = j.at("lab").get<std::string>().substr(0, 2);
+    title_ = j.at("title").get<std::string>();
+    for (const auto& e : j.at("exercises"))
+      exercises_.push_back({e.at("id").get<std::string>(), e.at("title").get<std::string>(), {}, {}});
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "warning: cannot read %s (%s); the exercise list will be empty\n", manifest.string().c_str(),
+                 e.what());
+  }
+}
+
+void ExerciseBoard::set(const std::string& id, ExerciseState state, const std::string& message) {
+  for (auto& e : exercises_)
+    if (e.id == id) e.state = state, e.message = message;
+}
+
+void ExerciseBoard::addProbe(const std::string& id, const std::string& file, const std::string& expression) {
+  probes_.push_back({id, file, expression});
+}
+
+void ExerciseBoard::probe() {
+  // One kernel per file: probe k writes result k, so a file costs one compile however many it has.
+  std::map<std::string, std::vector<const Probe*>> byFile;
+  for (const auto& p : probes_) byFile[p.file].push_back(&p);
+  Texture dummy = makeTexture2D(GL_R32F, 1, 1);
+  for (const auto& [file, probes] : byFile) {
+    std::string body;
+    for (size_t k = 0; k < probes.size(); ++k)
+      body += "if (wb_i == " + std::to_string(k) + ") result.x = float(" + probes[k]->expression + ");\n  ";
+    try {
+      const fs::path path = findShaderFile(file, shaderSearchPath());
+      probedFiles_[path] = fs::last_write_time(path);
+      auto r = runGlslKernel(readFile(path), path, body, int(probes.size()), 1, {}, {dummy.id()});
+      for (size_t k = 0; k < probes.size(); ++k)
+        set(probes[k]->id, isTodo(r[k].x) ? ExerciseState::NotImplemented : ExerciseState::Implemented,
+            isTodo(r[k].x) ? "the GLSL function still returns WB_TODO" : "");
+    } catch (const Error& e) {
+      for (const auto* p : probes) set(p->id, ExerciseState::Failed, e.what());
+    }
+  }
+}
+
+bool ExerciseBoard::probedFilesChanged() const {
+  for (const auto& [file, time] : probedFiles_) {
+    std::error_code ec;
+    if (fs::last_write_time(file, ec) != time) return true;
+  }
+  return false;
+}
+
+void ExerciseBoard::printUnfinished() const {
+  for (const auto& e : exercises_)
+    if (e.state == ExerciseState::NotImplemented || e.state == ExerciseState::Failed)
+      std::fprintf(stderr, "Exercise %s (%s) is %s: %s\n", e.id.c_str(), e.title.c_str(),
+                   e.state == ExerciseState::Failed ? "failing" : "not implemented yet", e.message.c_str());
+}
+
+nlohmann::json ExerciseBoard::toJson() const {
+  auto list = nlohmann::json::array();
+  for (const auto& e : exercises_)
+    list.push_back({{"id", e.id}, {"title", e.title}, {"state", stateName(e.state)}, {"message", e.message}});
+  return list;
+}
+
+}  // namespace wb

@@ -1,0 +1,67 @@
+/// @file exercise_board.hpp
+/// A lab's exercises as the running app knows them: the list from the lab's exercises.json (the one
+/// list shared with the tests and the grader), each one's last observed state, and the GLSL probes
+/// that ask a shader file whether its functions still return the stubs' WB_TODO.
+#pragma once
+#include <nlohmann/json_fwd.hpp>
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace wb {
+
+/// Where an exercise stands, as far as the running app can tell.
+enum class ExerciseState { Unknown, Implemented, NotImplemented, Failed };
+
+/// "unknown", "implemented", "not_implemented" or "failed": the JSON record's words.
+const char* stateName(ExerciseState state);
+
+/// One row of the info panel.
+struct ExerciseStatus {
+  std::string id;                                ///< "01.3"
+  std::string title;                             ///< from the lab's exercises.json
+  ExerciseState state = ExerciseState::Unknown;  ///< last observed state
+  std::string message;                           ///< why it is not implemented or failed
+};
+
+/// The exercise list of one lab, with states and GLSL probes.
+class ExerciseBoard {
+ public:
+  /// Reads `manifest` (labs/NN_name/exercises.json); a missing or malformed one leaves the list
+  /// empty and prints a warning.
+  explicit ExerciseBoard(const std::filesystem::path& manifest);
+  /// The lab's two-digit number ("01").
+  const std::string& number() const { return number_; }
+  /// The lab's title.
+  const std::string& title() const { return title_; }
+  /// Every exercise in manifest order.
+  const std::vector<ExerciseStatus>& exercises() const { return exercises_; }
+  /// Records an exercise's state; unknown ids are ignored.
+  void set(const std::string& id, ExerciseState state, const std::string& message);
+
+  /// Registers the GLSL probe of exercise `id`: `expression` is evaluated in a compute shader that
+  /// includes `file` and compared with WB_TODO.
+  void addProbe(const std::string& id, const std::string& file, const std::string& expression);
+  /// Runs every probe now (needs a GL context) and records the results.
+  void probe();
+  /// True when a file the probes read has changed since they ran.
+  bool probedFilesChanged() const;
+
+  /// Prints one line per exercise that is not implemented or failing (stderr, for people).
+  void printUnfinished() const;
+  /// The exercises as JSON: [{"id", "title", "state", "message"}].
+  nlohmann::json toJson() const;
+
+ private:
+  struct Probe {
+    std::string id, file, expression;
+  };
+  std::string number_, title_;
+  std::vector<ExerciseStatus> exercises_;
+  std::vector<Probe> probes_;
+  std::map<std::filesystem::path, std::filesystem::file_time_type> probedFiles_;
+};
+
+}  // namespace wb

@@ -1,0 +1,60 @@
+/// @file gpu_timers.hpp
+/// GPU time per named pass: GL_TIME_ELAPSED queries, collected when the GPU has the results, with
+/// per-pass statistics for the info panel, --bench and --sweep.
+#pragma once
+#include "common/gl.hpp"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace wb {
+
+/// One pass's GPU time in milliseconds.
+struct PassStats {
+  double last = 0;    ///< the latest sample
+  double sum = 0;     ///< total of the recorded samples
+  double min = 1e30;  ///< smallest recorded sample
+  double max = 0;     ///< largest recorded sample
+  int count = 0;      ///< recorded samples
+  /// The mean of the recorded samples (0 when none).
+  double mean() const { return count ? sum / count : 0; }
+};
+
+/// Named GPU pass timers. Passes may not nest (GL allows one GL_TIME_ELAPSED query at a time).
+class GpuTimers {
+ public:
+  GpuTimers() = default;
+  ~GpuTimers();
+  GpuTimers(const GpuTimers&) = delete;
+  GpuTimers& operator=(const GpuTimers&) = delete;
+
+  /// Times the GPU work issued while it lives: `auto t = timers.scope("shadow");`.
+  class Scope {
+   public:
+    /// Begins a GL_TIME_ELAPSED query for the pass `name`.
+    Scope(GpuTimers& timers, const char* name);
+    /// Ends the query; the result is collected when the GPU has it.
+    ~Scope();
+    Scope(const Scope&) = delete;
+    Scope& operator=(const Scope&) = delete;
+  };
+  /// Starts timing a pass until the returned object is destroyed.
+  Scope scope(const char* name) { return Scope(*this, name); }
+
+  /// Reads finished queries into the statistics; `wait` blocks until all are done, and only
+  /// `record`ed samples count towards mean, min and max (warm-up frames do not).
+  void collect(bool wait, bool record);
+  /// Forgets the statistics (the pass names stay, in their order).
+  void resetStats();
+  /// Every pass seen so far, in first-seen order.
+  const std::vector<std::pair<std::string, PassStats>>& passes() const { return passes_; }
+
+ private:
+  PassStats& stats(const std::string& name);
+  std::vector<std::pair<std::string, GLuint>> pending_;
+  std::vector<GLuint> free_;
+  std::vector<std::pair<std::string, PassStats>> passes_;
+};
+
+}  // namespace wb

@@ -1,0 +1,135 @@
+#include "common/measurement.hpp"
+
+#include "common/error.hpp"
+#include "common/shadow_map.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+
+namespace wb {
+namespace {
+
+template <typename... Args>
+std::string strf(const char* format, Args... args) {
+  char text[512];
+  std::snprintf(text, sizeof text, format, args...);
+  return text;
+}
+
+std::string footprint(const LightView& s) {
+  return std::to_string(s.kernel) + "x" + std::to_string(s.kernel) + (s.kernel > 1 && s.gaussian ? " Gaussian" : "");
+}
+
+// The contact gap and the PCF reference need texels of one size: one orthographic 2D map.
+std::string whyNotOrthographic2D(const LightView& v) {
+  if (!v.hasMap()) return "no shadow map";
+  if (!v.isSingle2D()) return "defined for one 2D map; this light has a " + v.shapeName();
+  if (v.light.type != LightType::Directional) return "directional lights only";
+  return "";
+}
+
+}  // namespace
+
+nlohmann::json MeasureResult::toJson() const {
+  nlohmann::json j = {{"acne_percent", 100 * metrics.acneRate()},
+                      {"leak_percent", 100 * metrics.leakRate()},
+                      {"shadow_light_percent", 100 * metrics.meanShadowLight()},
+                      {"lit_pixels", metrics.litPixels},
+                      {"shadowed_pixels", metrics.shadowedPixels},
+                      {"contact_gap_texels", nullptr},
+                      {"pcf_diff_percent", nullptr},
+                      {"pcf_lighter_percent", nullptr},
+                      {"notes", notes}};
+  if (gapTexels >= 0) j["contact_gap_texels"] = gapTexels;
+  if (reference.pixels > 0) {
+    j["pcf_diff_percent"] = 100 * reference.meanAbs();
+    j["pcf_lighter_percent"] = 100 * reference.lighterRate();
+  }
+  return j;
+}
+
+const std::vector<float>* Measurement::pcfReference(const MeasureInput& in, int side) {
+  // In split screen the left side's reference needs the map it was drawn with, so its size must match.
+  const LightView& s = in.split.on ? in.sides[side] : in.light;
+  if (!whyNotOrthographic2D(in.light).empty() || s.size != in.light.size) return nullptr;
+  if (reference_[side].empty()) {
+    const glm::ivec2 size = in.target.size();
+    reference_[side] = pcf_.render(in.target.attachment(2), size.x, size.y, in.light.texture, in.light.size,
+                                   in.light.viewProj[0], s.kernel, s.gaussian);
+  }
+  return &reference_[side];
+}
+
+std::string Measurement::halves(const MeasureInput& in, const FloatImage& rendered, const FloatImage& exact,
+                                const std::vector<glm::vec4>& positions) {
+  const int w = rendered.width, h = rendered.height;
+  std::string text;
+  for (int side = 0; side < 2; ++side) {
+    const int x0 = side * (w - w / 2), x1 = x0 + w / 2;
+    FloatImage r{w / 2, h, {}}, e{w / 2, h, {}};
+    std::vector<glm::vec4> pos;
+    for (int y = 0; y < h; ++y)
+      for (int x = x0; x < x1; ++x) {
+        const size_t k = size_t(y) * size_t(w) + size_t(x);
+        r.pixels.push_back(rendered.pixels[k]), e.pixels.push_back(exact.pixels[k]), pos.push_back(positions[k]);
+      }
+    const VisibilityMetrics m = compareVisibility(r, e, pos);
+    text += strf("\n%s %s=%s: acne %.2f%%, leak %.2f%%, light in shadows %.2f%%", side ? "right" : "left ",
+                 in.split.key.c_str(), (side ? in.split.b : in.split.a).c_str(), 100 * m.acneRate(), 100 * m.leakRate(),
+                 100 * m.meanShadowLight());
+    if (const auto* ref = pcfReference(in, side)) {
+      const ReferenceDifference d = compareWithReference(rendered, *ref, x0, x1);
+      text += strf("\n       against PCF %s: |difference| %.2f%%, lighter %.2f%%", footprint(in.sides[side]).c_str(),
+                   100 * d.meanAbs(), 100 * d.lighterRate());
+    } else {
+      text += "\n       against PCF: n/a";
+    }
+  }
+  return text;
+}
+
+MeasureResult Measurement::measure(const MeasureInput& in) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const int w = in.target.size().x, h = in.target.size().y;
+  const FloatImage rendered = in.target.readVisibility();
+  const std::vector<glm::vec4> positions = in.target.readPositions();
+  if (!rays_ || raysScene_ != &in.scene || raysCutoff_ != in.alphaCutoff)
+    rays_ = std::make_unique<RayScene>(in.scene, in.alphaCutoff), raysScene_ = &in.scene, raysCutoff_ = in.alphaCutoff;
+  reference_[0].clear(), reference_[1].clear();
+  const Light& light = in.light.hasMap() ? in.light.light : in.sceneLight;
+  const FloatImage exact = exactVisibility(*rays_, light, w, h, positions);
+  MeasureResult r;
+  r.metrics = compareVisibility(rendered, exact, positions);
+  const std::string why = whyNotOrthographic2D(in.light);
+  if (why.empty())
+    r.gapTexels = contactGapTexels(rendered, exact, positions, *rays_, light, in.scene.boundsMin.y,
+                                   texelWorldSize(in.light.viewProj[0], in.light.size));
+  else
+    r.notes = "contact gap and PCF reference: n/a (" + why + ")";
+  std::string pcfText = "against PCF: n/a (" + (why.empty() ? std::string("map sizes differ") : why) + ")";
+  if (const auto* ref = pcfReference(in, in.split.on ? 1 : 0)) {
+    r.reference = compareWithReference(rendered, *ref, 0, w);
+    pcfText = strf(
+        "against PCF over the same footprint (%s)%s: |difference| %.2f%%,\n  lighter by > 0.1 on "
+        "%.2f%%, darker on %.2f%% of light-facing pixels",
+        footprint(in.split.on ? in.sides[1] : in.light).c_str(), in.split.on ? ", whole frame" : "",
+        100 * r.reference.meanAbs(), 100 * r.reference.lighterRate(), 100 * r.reference.darkerRate());
+  }
+  const std::string split = in.split.on ? halves(in, rendered, exact, positions) : "";
+  r.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  const VisibilityMetrics& m = r.metrics;
+  r.text = strf(
+               "acne rate %.2f%% (%ld of %ld lit pixels drawn shadowed)\nlight leak %.2f%% (%ld of %ld shadowed "
+               "pixels drawn lit)\ncontact gap %s texels\nlight in shadows %.2f%% (mean visibility where the light "
+               "is blocked)\n(exact visibility by ray casting, %.0f ms)",
+               100 * m.acneRate(), m.acnePixels, m.litPixels, 100 * m.leakRate(), m.leakPixels, m.shadowedPixels,
+               r.gapTexels < 0 ? "n/a" : strf("%.1f", r.gapTexels).c_str(), 100 * m.meanShadowLight(),
+               r.milliseconds) +
+           "\n" + pcfText + split;
+  r.heatmap = artifactHeatmap(rendered, exact, positions);
+  return r;
+}
+
+}  // namespace wb

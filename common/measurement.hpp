@@ -1,0 +1,63 @@
+/// @file measurement.hpp
+/// Measures a rendered frame against exact visibility (ray casting): acne, light leak, light in
+/// shadows, the contact gap, and for filtered maps the difference from PCF over the same footprint.
+/// In split screen each half is measured on its own. Measurements that are defined for one 2D
+/// orthographic map only say so for other shapes instead of computing nonsense.
+#pragma once
+#include "common/command_line.hpp"
+#include "common/frame_target.hpp"
+#include "common/ground_truth.hpp"
+#include "common/light_view.hpp"
+#include "common/prefilter.hpp"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace wb {
+
+/// What one measurement found.
+struct MeasureResult {
+  VisibilityMetrics metrics;       ///< acne, leak, light in shadows (whole frame)
+  double gapTexels = -1;           ///< contact gap in texels, −1 when not defined for this light
+  ReferenceDifference reference;   ///< against PCF (pixels = 0 when not defined)
+  std::string notes;               ///< why a measurement was skipped, if one was
+  std::string text;                ///< the whole result for people
+  std::vector<uint8_t> heatmap;    ///< RGBA8: acne red, leaks blue (rows bottom to top)
+  double milliseconds = 0;         ///< time the measurement took
+  /// The numbers as JSON: acne_percent, leak_percent, shadow_light_percent, contact_gap_texels
+  /// (null when not defined), pcf_diff_percent and pcf_lighter_percent (null when not defined).
+  nlohmann::json toJson() const;
+};
+
+/// The state one frame is measured in.
+struct MeasureInput {
+  const FrameTarget& target;  ///< the frame, with visibility and positions
+  const Scene& scene;         ///< the scene the rays are cast against
+  float alphaCutoff;          ///< the alpha test the renderer used
+  const LightView& light;     ///< the light and map of the (right half of the) frame
+  const Light& sceneLight;    ///< the light to use when the lab showed none
+  const CompareChoice& split; ///< split screen, if on
+  const LightView* sides;     ///< in split screen: the left and right halves' lights (two)
+};
+
+/// Measures frames; keeps the ray-cast scene and the PCF reference between calls.
+class Measurement {
+ public:
+  /// Measures the frame in `in`.
+  MeasureResult measure(const MeasureInput& in);
+
+ private:
+  const std::vector<float>* pcfReference(const MeasureInput& in, int side);
+  std::string halves(const MeasureInput& in, const FloatImage& rendered, const FloatImage& exact,
+                     const std::vector<glm::vec4>& positions);
+  std::unique_ptr<RayScene> rays_;
+  const Scene* raysScene_ = nullptr;
+  float raysCutoff_ = -1;
+  PcfReference pcf_;
+  std::vector<float> reference_[2];
+};
+
+}  // namespace wb

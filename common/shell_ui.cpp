@@ -1,0 +1,117 @@
+#include "common/shell_ui.hpp"
+
+#include "common/context.hpp"
+#include "common/settings.hpp"
+
+#include <imgui.h>
+
+namespace wb {
+namespace {
+
+const ImVec4 kRed(1, 0.4f, 0.4f, 1), kGreen(0.5f, 1, 0.5f, 1), kYellow(1, 0.85f, 0.3f, 1), kGrey(0.7f, 0.7f, 0.7f, 1);
+
+void exerciseRow(const ExerciseStatus& e) {
+  const char* label = "not run yet";
+  ImVec4 c = kGrey;
+  if (e.state == ExerciseState::Implemented) label = "done", c = kGreen;
+  if (e.state == ExerciseState::NotImplemented) label = "not implemented", c = kYellow;
+  if (e.state == ExerciseState::Failed) label = "error", c = kRed;
+  ImGui::TextColored(c, "%s  %-16s %s", e.id.c_str(), label, e.title.c_str());
+  if (!e.message.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.message.c_str());
+  if (e.state != ExerciseState::Failed) return;
+  // The line that names file:line, if there is one.
+  std::string first = e.message.substr(0, e.message.find('\n'));
+  if (auto at = e.message.find(": error"); at != std::string::npos) {
+    const size_t begin = e.message.rfind('\n', at) + 1;
+    first = e.message.substr(begin, e.message.find('\n', at) - begin);
+  }
+  ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40);
+  ImGui::TextColored(kRed, "      %s", first.c_str());
+  ImGui::PopTextWrapPos();
+}
+
+void infoPanel(const ShellInput& in, ShellState& state) {
+  const ExerciseBoard& board = in.board;
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::Begin(("Lab " + board.number() + ": " + board.title()).c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::TextColored(kGrey, "%s | %.1f fps | %dx%d", Context::renderer().c_str(), ImGui::GetIO().Framerate,
+                     in.frameSize.x, in.frameSize.y);
+  ImGui::Separator();
+  ImGui::Text("Exercises (run ./workbook check %s to grade them)", board.number().c_str());
+  for (const auto& e : board.exercises()) exerciseRow(e);
+  if (!in.timers.passes().empty()) {
+    ImGui::Separator();
+    ImGui::Text("GPU time per pass");
+    for (const auto& [name, s] : in.timers.passes()) ImGui::Text("  %-12s %7.3f ms", name.c_str(), s.last);
+  }
+  ImGui::Separator();
+  if (ImGui::Button("Measure against exact visibility")) state.measureRequested = true;
+  if (!state.measured.empty()) {
+    ImGui::SameLine();
+    ImGui::Checkbox("heatmap", &state.showHeatmap);
+    ImGui::TextUnformatted(state.measured.c_str());
+  }
+  for (const auto& p : in.programs)
+    if (!p.error().empty()) {
+      ImGui::Separator();
+      ImGui::TextColored(kRed, "Shader error (the last good version is still running):");
+      ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40);
+      ImGui::TextUnformatted(p.error().c_str());
+      ImGui::PopTextWrapPos();
+    }
+  for (const auto& w : in.warnings) ImGui::TextColored(kYellow, "warning: %s", w.c_str());
+  if (!state.lastScreenshot.empty()) ImGui::TextColored(kGrey, "saved %s", state.lastScreenshot.c_str());
+  ImGui::TextColored(kGrey, "drag: orbit | wheel: zoom | 1-9: bookmarks | H: hide panels | F12: screenshot");
+  ImGui::End();
+}
+
+void combo(const char* label, std::string& current, const std::vector<std::string>& options) {
+  if (!ImGui::BeginCombo(label, current.c_str())) return;
+  for (const auto& o : options)
+    if (ImGui::Selectable(o.c_str(), o == current)) current = o;
+  ImGui::EndCombo();
+}
+
+// Any setting with named choices can be compared: value A on the left, B on the right.
+void compareSection(const Settings& settings, CompareChoice& c) {
+  if (!ImGui::CollapsingHeader("compare (split screen)")) return;
+  std::vector<const Setting*> choices;
+  std::vector<std::string> names;
+  for (const auto& s : settings.all())
+    if (s.kind == Setting::Kind::Choice) choices.push_back(&s), names.push_back(s.name);
+  ImGui::Checkbox("split screen", &c.on);
+  if (c.key.empty() && !choices.empty())
+    c.key = choices.back()->name, c.a = choices.back()->choices.front(), c.b = choices.back()->choices.back();
+  const std::string oldKey = c.key;
+  combo("setting", c.key, names);
+  for (const auto* s : choices)
+    if (s->name == c.key) {
+      if (c.key != oldKey) c.a = s->choices.front(), c.b = s->choices.back();
+      combo("left (A)", c.a, s->choices);
+      combo("right (B)", c.b, s->choices);
+    }
+}
+
+}  // namespace
+
+void drawShell(const ShellInput& in, ShellState& state) {
+  if (state.hidePanels) {
+    ImGui::SetNextWindowPos(ImVec2(8, 8));
+    ImGui::Begin("##panels hidden", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::TextUnformatted("H: show the panels");
+    ImGui::End();
+    return;
+  }
+  infoPanel(in, state);
+  ImGui::SetNextWindowPos(ImVec2(float(in.frameSize.x) - 8, 8), ImGuiCond_FirstUseEver, ImVec2(1, 0));
+  ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Settings", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::PushItemWidth(150);
+  in.settings.ui();
+  compareSection(in.settings, state.compare);
+  in.labUi();
+  ImGui::PopItemWidth();
+  ImGui::End();
+}
+
+}  // namespace wb

@@ -1,0 +1,46 @@
+/// @file shell_ui.hpp
+/// The ImGui shell around every lab: the info panel (renderer, fps, exercise states, GPU time per
+/// pass, the measurement, shader errors, warnings) and the Settings window (every setting, the
+/// split-screen choice, then the lab's own widgets).
+#pragma once
+#include "common/command_line.hpp"
+#include "common/exercise_board.hpp"
+#include "common/gpu_timers.hpp"
+#include "common/shader.hpp"
+
+#include <glm/vec2.hpp>
+
+#include <functional>
+#include <list>
+#include <string>
+#include <vector>
+
+namespace wb {
+
+class Settings;
+
+/// What the shell shows and what its widgets change, kept by the app between frames.
+struct ShellState {
+  bool hidePanels = false;        ///< H: the scene alone, for a lecture
+  bool showHeatmap = false;       ///< the measurement's heatmap over the frame
+  bool measureRequested = false;  ///< set when the Measure button was pressed
+  std::string measured;           ///< the last measurement, as text
+  std::string lastScreenshot;     ///< the last screenshot's path
+  CompareChoice compare;          ///< the split-screen choice
+};
+
+/// What the shell reads from the hosted lab this frame.
+struct ShellInput {
+  const ExerciseBoard& board;               ///< exercise states
+  const GpuTimers& timers;                  ///< GPU time per pass
+  const std::list<Program>& programs;       ///< for their compile errors
+  const std::vector<std::string>& warnings; ///< the lab's warnings
+  Settings& settings;                       ///< the lab's settings (edited here)
+  glm::ivec2 frameSize;                     ///< where the windows go
+  std::function<void()> labUi;              ///< the lab's own widgets
+};
+
+/// Draws the info panel and the Settings window (inside an ImGui frame).
+void drawShell(const ShellInput& in, ShellState& state);
+
+}  // namespace wb

@@ -1,0 +1,41 @@
+#include "common/split_screen.hpp"
+
+#include "common/settings.hpp"
+
+namespace wb {
+
+void SplitScreen::render(FrameTarget& target, Settings& settings, const CompareChoice& choice,
+                         const std::function<void()>& draw, const std::function<void(int side)>& afterDraw) {
+  const bool split = choice.on && !choice.key.empty();
+  if (!split) {
+    draw();
+    afterDraw(0);
+    return;
+  }
+  const glm::ivec2 size = target.size();
+  const int half = size.x / 2;
+  if (!saved_[0].id() || savedSize_ != size) {
+    saved_[0] = makeTexture2D(GL_RGBA8, half, size.y);
+    saved_[1] = makeTexture2D(GL_R32F, half, size.y);
+    saved_[2] = makeTexture2D(GL_RGBA32F, half, size.y);
+    savedSize_ = size;
+  }
+  const std::string before = settings.value(choice.key);
+  settings.assign(choice.key + "=" + choice.a);
+  draw();
+  afterDraw(0);
+  target.copyColumns(0, half, saved_, false);
+  settings.assign(choice.key + "=" + choice.b);
+  draw();
+  afterDraw(1);
+  target.copyColumns(0, half, saved_, true);
+  settings.assign(choice.key + "=" + before);
+  target.bind();  // a white divider between the halves
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(half - 1, 0, 2, size.y);
+  const float white[4] = {1, 1, 1, 1};
+  glClearBufferfv(GL_COLOR, 0, white);
+  glDisable(GL_SCISSOR_TEST);
+}
+
+}  // namespace wb

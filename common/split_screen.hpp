@@ -1,0 +1,28 @@
+/// @file split_screen.hpp
+/// Split-screen comparison of one setting: the frame is drawn twice, with value A kept in the left
+/// half and value B in the right, and a white divider between them.
+#pragma once
+#include "common/command_line.hpp"
+#include "common/frame_target.hpp"
+#include "common/gl.hpp"
+
+#include <functional>
+
+namespace wb {
+
+class Settings;
+
+/// Draws one frame whole or split.
+class SplitScreen {
+ public:
+  /// Calls `draw` once, or with `choice.on` twice (setting `choice.key` to A, then B, then back);
+  /// `afterDraw(side)` runs after each (side 0 = left or whole frame, 1 = right).
+  void render(FrameTarget& target, Settings& settings, const CompareChoice& choice, const std::function<void()>& draw,
+              const std::function<void(int side)>& afterDraw);
+
+ private:
+  Texture saved_[3];  // the left half's attachments while the right half is drawn
+  glm::ivec2 savedSize_{0};
+};
+
+}  // namespace wb
