@@ -43,9 +43,12 @@ Framebuffer depthFramebuffer(GLuint texture, int layer) {
   return fbo;
 }
 
+// Every map is drawn with the depth test on, whatever the pass before it left.
 void bindAndClear(const Framebuffer& fbo, int size) {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
   glViewport(0, 0, size, size);
+  glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_TRUE);
   glClear(GL_DEPTH_BUFFER_BIT);
 }
 

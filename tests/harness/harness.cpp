@@ -2,6 +2,7 @@
 
 #include "common/context.hpp"
 #include "common/glsl_harness.hpp"
+#include "common/run_record.hpp"
 #include "common/shader.hpp"
 #include "common/variant.hpp"
 
@@ -89,9 +90,11 @@ std::vector<glm::vec4> runExercise(const std::string& id, const std::string& bod
 // Runs the lab headless for exercise `id` with GLSL isolation (the exercise's own chunk from this
 // build, everything else from the solution: a GLSL exercise then runs in the solution's app, so C++
 // stubs cannot block it, and a C++ exercise runs in this build's app with the solution's GLSL).
+// The run's JSON record (--record) says how it went; its human-readable text is only shown.
 // Returns the log, or fails the test with ERROR / NOT IMPLEMENTED.
 static ::testing::AssertionResult runIsolated(const std::string& id, const fs::path& out,
-                                              const std::vector<std::string>& args, std::string& logText) {
+                                              const std::vector<std::string>& args, std::string& logText,
+                                              RunResult* result = nullptr) {
   fs::create_directories(out);
   std::string env = "WB_STRICT_GL=1 ";
   std::string exe = variant::kLabExe;
@@ -101,9 +104,10 @@ static ::testing::AssertionResult runIsolated(const std::string& id, const fs::p
     std::ofstream(out / "exercise.glsl") << isolatedExerciseSource("exercise.glsl", id);
     env += "WB_SHADER_OVERLAY=" + quote(out.string()) + " ";
   }
-  const fs::path log = out / "lab.log";
+  const fs::path log = out / "lab.log", record = out / "run.json";
+  fs::remove(record);
   // From its output folder: a headless run without --screenshot writes labNN.png where it runs.
-  std::string cmd = "cd " + quote(out.string()) + " && " + env + "timeout 120 " + quote(exe) + " --headless";
+  std::string cmd = "cd " + quote(out.string()) + " && " + env + "timeout 120 " + quote(exe) + " --headless --record " + quote(record.string());
   for (const auto& a : args) cmd += " " + quote(a);
   const int status = std::system((cmd + " >" + quote(log.string()) + " 2>&1").c_str());
   const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128;
@@ -121,12 +125,17 @@ static ::testing::AssertionResult runIsolated(const std::string& id, const fs::p
                                          << ": " << (cause.empty() ? last : cause) << "\n"
                                          << logText << "command: " << cmd;
   }
+  RunResult run;
+  try {
+    run = readRunRecord(record);
+  } catch (const std::exception& e) {
+    return ::testing::AssertionFailure() << "ERROR: the lab wrote no usable record: " << e.what() << "\n" << logText;
+  }
   // The app probes every exercise; a stub whose effect cannot be seen in pixels (an alpha test
   // that keeps everything) is still reported as not implemented.
-  std::istringstream lines(logText);
-  for (std::string l; std::getline(lines, l);)
-    if (l.rfind("Exercise " + id + " (", 0) == 0 && l.find("not implemented yet") != std::string::npos)
-      return ::testing::AssertionFailure() << "NOT IMPLEMENTED: " << l;
+  if (run.exerciseStates[id] == "not_implemented")
+    return ::testing::AssertionFailure() << "NOT IMPLEMENTED: exercise " << id << ": " << run.exerciseMessages[id];
+  if (result) *result = run;
   return ::testing::AssertionSuccess();
 }
 
@@ -143,16 +152,17 @@ SceneMetrics measureScene(const std::string& id, const std::string& name, const 
   all.insert(all.end(), args.begin(), args.end());
   std::string log;
   SceneMetrics m;
-  const auto ok = runIsolated(id, fs::path(variant::kOutputDir) / ("Ex" + id + "_" + name), all, log);
+  RunResult run;
+  const auto ok = runIsolated(id, fs::path(variant::kOutputDir) / ("Ex" + id + "_" + name), all, log, &run);
   if (!ok) {
     m.failure = ok.message();
     return m;
   }
-  const auto at = log.find("acne rate");
-  if (at == std::string::npos ||
-      std::sscanf(log.c_str() + at, "acne rate %lf%% %*[^\n]\nlight leak %lf%% %*[^\n]\ncontact gap %lf",
-                  &m.acnePercent, &m.leakPercent, &m.gapTexels) < 2)
-    m.failure = "ERROR: the lab printed no measurements:\n" + log;
+  if (!run.acnePercent || !run.leakPercent) {
+    m.failure = "ERROR: the lab's record holds no measurements:\n" + log;
+    return m;
+  }
+  m.acnePercent = *run.acnePercent, m.leakPercent = *run.leakPercent, m.gapTexels = run.gapTexels.value_or(-1);
   return m;
 }
 
@@ -166,9 +176,9 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
   fs::create_directories(out);
   fs::remove(pfm);
   std::string logText;
-  const auto ok = runIsolated(id, out, all, logText);
+  RunResult run;
+  const auto ok = runIsolated(id, out, all, logText, &run);
   if (!ok) FAIL() << ok.message();
-  const fs::path log = out / "lab.log";
   const FloatImage got = readPfm(pfm);
   if (updatingGolden()) {
     fs::create_directories(golden.parent_path());
@@ -210,9 +220,8 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
   std::ostringstream msg;
   if (todo) {
     msg << "NOT IMPLEMENTED: " << todo << " pixels of scene '" << name << "' show the not-implemented placeholder";
-    std::istringstream lines(readFile(log));
-    for (std::string l; std::getline(lines, l);)
-      if (l.find("not implemented") != std::string::npos) msg << "\n  " << l;
+    for (const auto& [other, state] : run.exerciseStates)
+      if (state == "not_implemented") msg << "\n  exercise " << other << " is not implemented yet";
   } else {
     char pct[64];
     std::snprintf(pct, sizeof pct, "%.2f%% of pixels (allowed %.2f%%)", 100 * fraction, 100 * maxFailingFraction);
