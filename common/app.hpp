@@ -58,6 +58,8 @@ class App {
   int sweep();
   /// Measures after the loop if asked, writes the requested files, and fills `record`.
   void finish(RunRecord& record);
+  /// The frame target the hosted lab draws into (what the last frame showed).
+  const FrameTarget& target() const { return target_; }
 
  private:
   void beginUiFrame();

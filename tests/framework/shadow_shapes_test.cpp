@@ -2,6 +2,7 @@
 // the frame target counts in its stencil. Every expected value is worked out by hand in a comment.
 #include "common/debug_views.hpp"
 #include "common/frame_target.hpp"
+#include "common/measurement.hpp"
 #include "common/scene.hpp"
 #include "common/shader.hpp"
 #include "common/shadow_map.hpp"
@@ -166,4 +167,24 @@ TEST_F(GlTest, FrameTargetCountsInItsStencil) {
   target.clear();
   stencil = target.readStencil();
   EXPECT_EQ(stencil[100], 0);
+}
+
+// The contact gap and the PCF reference need one orthographic 2D map; for a cube map the
+// measurement says so instead of computing them.
+TEST_F(GlTest, MeasurementsOfOneShapeAreSkippedForOthers) {
+  const wb::Scene scene = groundScene();
+  wb::CubeShadowMap cube;
+  cube.resize(16);
+  wb::FrameTarget target;
+  target.resize({16, 16});
+  target.clear();
+  const wb::LightView light = cube.describe(scene.lights[0], faceMatrices({0, 2, 0}, 0.5f, 10), true);
+  const wb::CompareChoice none;
+  wb::Measurement measurement;
+  const wb::MeasureResult r =
+      measurement.measure({target, scene, 0.5f, light, scene.lights[0], none, nullptr});
+  EXPECT_EQ(r.gapTexels, -1);
+  EXPECT_EQ(r.reference.pixels, 0);
+  EXPECT_NE(r.notes.find("cube map"), std::string::npos) << r.notes;
+  EXPECT_NE(r.text.find("n/a"), std::string::npos) << r.text;
 }
