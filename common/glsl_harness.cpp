@@ -5,6 +5,7 @@
 #include "common/variant.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -22,6 +23,36 @@ std::pair<size_t, size_t> chunk(const std::string& text, const std::string& id) 
   size_t end = text.find("// EXERCISE ", begin + marker.size());
   end = end == std::string::npos ? text.size() : text.rfind('\n', end) + 1;
   return {begin, end};
+}
+
+// The kernel's compute shader: declarations, the functions (keeping their own source numbers, 0 =
+// origin, then its includes, so errors name the student's file and line), then main().
+ShaderSource kernelSource(const std::string& functions, const fs::path& origin, const std::string& body, int stride,
+                          const std::vector<SamplerType>& types) {
+  std::ostringstream src;
+  src << "#version 450 core\n"
+      << "layout(local_size_x = 64) in;\n"
+      << "layout(std430, binding = 0) readonly buffer WbIn { vec4 wb_in[]; };\n"
+      << "layout(std430, binding = 1) writeonly buffer WbOut { vec4 wb_out[]; };\n"
+      << "uniform int wb_count;\n"
+      << "layout(binding = 7) uniform sampler2DShadow wb_shadow0;  // a depth-compare sampler, if bound\n";
+  for (size_t t = 0; t < types.size(); ++t) src << "uniform " << glslSamplerName(types[t]) << " wb_tex" << t << ";\n";
+  ShaderSource pre = preprocessShader(functions, origin, "", shaderSearchPath());
+  src << "#define IN(k) wb_in[wb_i * " << stride << " + (k)]\n"
+      << "#line 1 0\n"
+      << pre.text << "\n#line 1 " << pre.files.size() << "\n"
+      << "void main() {\n  int wb_i = int(gl_GlobalInvocationID.x);\n  if (wb_i >= wb_count) return;\n"
+      << "  vec4 result = vec4(0.0);\n  " << body << "\n  wb_out[wb_i] = result;\n}\n";
+  pre.files.emplace_back("<harness main>");
+  pre.text = src.str();
+  return pre;
+}
+
+// "0x8513" for a GL enum in a message.
+std::string hex(GLint v) {
+  char text[16];
+  std::snprintf(text, sizeof text, "0x%04X", unsigned(v));
+  return text;
 }
 
 }  // namespace
@@ -46,30 +77,62 @@ std::string isolatedExerciseSource(const std::string& file, const std::string& i
   return takeExerciseChunk(readFile(solution), mine, id);
 }
 
+const char* glslSamplerName(SamplerType type) {
+  switch (type) {
+    case SamplerType::Sampler2D:
+      return "sampler2D";
+    case SamplerType::Sampler2DShadow:
+      return "sampler2DShadow";
+    case SamplerType::SamplerCube:
+      return "samplerCube";
+    case SamplerType::SamplerCubeShadow:
+      return "samplerCubeShadow";
+    case SamplerType::Sampler2DArray:
+      return "sampler2DArray";
+    case SamplerType::Sampler2DArrayShadow:
+      return "sampler2DArrayShadow";
+    case SamplerType::Auto:
+      break;
+  }
+  throw Error("glslSamplerName: SamplerType::Auto has no GLSL name (resolve it with samplerTypeOf())");
+}
+
+SamplerType samplerTypeOf(GLuint id) {
+  if (id == 0) return SamplerType::Sampler2D;
+  GLint target = 0, compare = GL_NONE;
+  glGetTextureParameteriv(id, GL_TEXTURE_TARGET, &target);
+  glGetTextureParameteriv(id, GL_TEXTURE_COMPARE_MODE, &compare);
+  const bool shadow = compare == GL_COMPARE_REF_TO_TEXTURE;
+  switch (target) {
+    case GL_TEXTURE_2D:
+      return shadow ? SamplerType::Sampler2DShadow : SamplerType::Sampler2D;
+    case GL_TEXTURE_CUBE_MAP:
+      return shadow ? SamplerType::SamplerCubeShadow : SamplerType::SamplerCube;
+    case GL_TEXTURE_2D_ARRAY:
+      return shadow ? SamplerType::Sampler2DArrayShadow : SamplerType::Sampler2DArray;
+    default:
+      throw Error("texture " + std::to_string(id) + " has target " + hex(target) +
+                  "; a kernel texture must be GL_TEXTURE_2D, GL_TEXTURE_CUBE_MAP or GL_TEXTURE_2D_ARRAY");
+  }
+}
+
 std::vector<glm::vec4> runGlslKernel(const std::string& functions, const fs::path& origin, const std::string& body,
                                      int count, int stride, const std::vector<glm::vec4>& inputs,
                                      const std::vector<GLuint>& textures) {
-  std::ostringstream src;
-  src << "#version 450 core\n"
-      << "layout(local_size_x = 64) in;\n"
-      << "layout(std430, binding = 0) readonly buffer WbIn { vec4 wb_in[]; };\n"
-      << "layout(std430, binding = 1) writeonly buffer WbOut { vec4 wb_out[]; };\n"
-      << "uniform int wb_count;\n"
-      << "layout(binding = 7) uniform sampler2DShadow wb_shadow0;  // a depth-compare sampler, if bound\n";
-  for (size_t t = 0; t < textures.size(); ++t) src << "uniform sampler2D wb_tex" << t << ";\n";
-  // The functions keep their own source numbers (0 = origin, then its includes) so errors name the
-  // student's file and line; the harness's main() gets the next number.
-  ShaderSource pre = preprocessShader(functions, origin, "", shaderSearchPath());
-  src << "#define IN(k) wb_in[wb_i * " << stride << " + (k)]\n"
-      << "#line 1 0\n"
-      << pre.text << "\n#line 1 " << pre.files.size() << "\n"
-      << "void main() {\n  int wb_i = int(gl_GlobalInvocationID.x);\n  if (wb_i >= wb_count) return;\n"
-      << "  vec4 result = vec4(0.0);\n  " << body << "\n  wb_out[wb_i] = result;\n}\n";
-  pre.files.emplace_back("<harness main>");
-  pre.text = src.str();
+  std::vector<KernelTexture> typed;
+  for (GLuint id : textures) typed.push_back({id, SamplerType::Auto, 0});
+  return runGlslKernelWithSamplers(functions, origin, body, count, stride, inputs, typed);
+}
+
+std::vector<glm::vec4> runGlslKernelWithSamplers(const std::string& functions, const fs::path& origin,
+                                                 const std::string& body, int count, int stride,
+                                                 const std::vector<glm::vec4>& inputs,
+                                                 const std::vector<KernelTexture>& textures) {
+  std::vector<SamplerType> types;
+  for (const auto& t : textures) types.push_back(t.type == SamplerType::Auto ? samplerTypeOf(t.id) : t.type);
   ProgramId prog;
   try {
-    prog = linkProgram({{GL_COMPUTE_SHADER, pre}});
+    prog = linkProgram({{GL_COMPUTE_SHADER, kernelSource(functions, origin, body, stride, types)}});
   } catch (const Error& e) {
     throw Error(std::string("compile error:\n") + e.what());
   }
@@ -81,7 +144,8 @@ std::vector<glm::vec4> runGlslKernel(const std::string& functions, const fs::pat
   glUseProgram(prog.id());
   glProgramUniform1i(prog.id(), glGetUniformLocation(prog.id(), "wb_count"), count);
   for (size_t t = 0; t < textures.size(); ++t) {
-    glBindTextureUnit(GLuint(t), textures[t]);
+    glBindTextureUnit(GLuint(t), textures[t].id);
+    if (textures[t].sampler) glBindSampler(GLuint(t), textures[t].sampler);
     const std::string name = "wb_tex" + std::to_string(t);
     glProgramUniform1i(prog.id(), glGetUniformLocation(prog.id(), name.c_str()), GLint(t));
   }
@@ -91,6 +155,8 @@ std::vector<glm::vec4> runGlslKernel(const std::string& functions, const fs::pat
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<glm::vec4> result(static_cast<size_t>(count));
   glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(count * sizeof(glm::vec4)), result.data());
+  for (size_t t = 0; t < textures.size(); ++t)
+    if (textures[t].sampler) glBindSampler(GLuint(t), 0);
   glUseProgram(0);
   return result;
 }

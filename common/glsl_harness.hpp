@@ -24,14 +24,50 @@ std::string takeExerciseChunk(const std::string& base, const std::string& donor,
 /// `file` is the name on the shader search path, e.g. "exercise.glsl".
 std::string isolatedExerciseSource(const std::string& file, const std::string& id);
 
+/// The GLSL sampler types a kernel texture can be declared as.
+enum class SamplerType {
+  Auto,                 ///< from the texture itself: see samplerTypeOf()
+  Sampler2D,            ///< sampler2D: texture(s, uv)
+  Sampler2DShadow,      ///< sampler2DShadow: texture(s, vec3(uv, ref))
+  SamplerCube,          ///< samplerCube: texture(s, dir)
+  SamplerCubeShadow,    ///< samplerCubeShadow: texture(s, vec4(dir, ref))
+  Sampler2DArray,       ///< sampler2DArray: texture(s, vec3(uv, layer))
+  Sampler2DArrayShadow  ///< sampler2DArrayShadow: texture(s, vec4(uv, layer, ref))
+};
+
+/// The GLSL spelling of `type`, e.g. "samplerCubeShadow"; throws wb::Error for SamplerType::Auto.
+const char* glslSamplerName(SamplerType type);
+
+/// The sampler type of texture `id` from its target (GL_TEXTURE_2D, GL_TEXTURE_CUBE_MAP,
+/// GL_TEXTURE_2D_ARRAY) and its own GL_TEXTURE_COMPARE_MODE (GL_COMPARE_REF_TO_TEXTURE: the shadow
+/// variant); Sampler2D for id 0. A compare mode set on a sampler object is not seen: name the type
+/// in a KernelTexture then. Throws wb::Error for another target.
+SamplerType samplerTypeOf(GLuint id);
+
+/// One texture of a kernel: `id` bound to the unit of its place in the list and declared as
+/// `type`; `sampler`, when not 0, is bound to that unit during the run (and unbound after).
+struct KernelTexture {
+  GLuint id = 0;                         ///< the texture
+  SamplerType type = SamplerType::Auto;  ///< its GLSL sampler type (Auto: samplerTypeOf(id))
+  GLuint sampler = 0;                    ///< a sampler object for its unit, or 0 for the texture's own state
+};
+
 /// Runs `body` once per invocation `wb_i` in [0, count) in a compute shader that first includes
 /// `functions` (read as if it were the file `origin`). The body reads its inputs with IN(k) =
 /// inputs[wb_i * stride + k] and writes `vec4 result`. Textures are bound to units 0.. as the
-/// uniforms wb_tex0, wb_tex1, ...; a depth texture with a compare sampler bound to unit 7 is
-/// `wb_shadow0`. Throws wb::Error with file:line on a compile error.
+/// uniforms wb_tex0, wb_tex1, ..., each declared with the sampler type samplerTypeOf() gives
+/// (sampler2D, sampler2DShadow, samplerCube, samplerCubeShadow, sampler2DArray or
+/// sampler2DArrayShadow); a depth texture with a compare sampler bound to unit 7 by the caller is
+/// `wb_shadow0` (a sampler2DShadow). Throws wb::Error with file:line on a compile error.
 std::vector<glm::vec4> runGlslKernel(const std::string& functions, const std::filesystem::path& origin,
                                      const std::string& body, int count, int stride,
                                      const std::vector<glm::vec4>& inputs, const std::vector<GLuint>& textures = {});
+
+/// runGlslKernel() with each texture's sampler type (or Auto) and sampler object given.
+std::vector<glm::vec4> runGlslKernelWithSamplers(const std::string& functions, const std::filesystem::path& origin,
+                                                 const std::string& body, int count, int stride,
+                                                 const std::vector<glm::vec4>& inputs,
+                                                 const std::vector<KernelTexture>& textures);
 
 /// True if `v` is the GLSL stubs' sentinel WB_TODO (see shaders/wb/exercise.glsl).
 inline bool isTodo(float v) { return v <= -1e29f; }

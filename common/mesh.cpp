@@ -1,7 +1,15 @@
 #include "common/mesh.hpp"
 
+#include "common/error.hpp"
+
+#include <glm/ext/vector_int3_sized.hpp>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <unordered_map>
 #include <utility>
 
 namespace wb {
@@ -30,16 +38,82 @@ MeshData grid(int nu, int nv, F f) {
       f(uv, v);
       m.vertices.push_back(v);
     }
+  // A triangle with two corners at one position (a sphere's pole) is left out: it draws nothing,
+  // and welded it would give its edges a third triangle.
+  auto same = [&m](uint32_t a, uint32_t b) { return m.vertices[a].position == m.vertices[b].position; };
+  auto triangle = [&](uint32_t a, uint32_t b, uint32_t c) {
+    if (!same(a, b) && !same(b, c) && !same(c, a)) m.indices.insert(m.indices.end(), {a, b, c});
+  };
   for (int j = 0; j < nv; ++j)
     for (int i = 0; i < nu; ++i) {
       uint32_t a = j * (nu + 1) + i, b = a + 1, c = a + nu + 1, d = c + 1;
-      for (uint32_t k : {a, b, c, b, d, c}) m.indices.push_back(k);
+      triangle(a, b, c);
+      triangle(b, d, c);
     }
+  m.weld();
   return m;
+}
+
+// The hash-grid cell of `p` for cells of size `epsilon`.
+glm::i64vec3 cellOf(glm::vec3 p, float epsilon) {
+  const glm::dvec3 c = glm::floor(glm::dvec3(p) / double(epsilon));
+  return glm::i64vec3(c);
+}
+
+uint64_t cellKey(glm::i64vec3 c) {
+  return uint64_t(c.x) * 73856093u ^ uint64_t(c.y) * 19349663u ^ uint64_t(c.z) * 83492791u;
 }
 }  // namespace
 
+void MeshData::weld(float epsilon) {
+  if (!(epsilon > 0)) throw Error("MeshData::weld: epsilon must be greater than 0, got " + std::to_string(epsilon));
+  weldedPositions.clear();
+  weldedIndices.clear();
+  // Each welded position sits in the bucket of its cell; a position within epsilon of it lies in
+  // the same or a neighbouring cell, so 27 buckets are searched (keys may collide: harmless).
+  std::unordered_map<uint64_t, std::vector<uint32_t>> buckets;
+  std::vector<uint32_t> remap(vertices.size());
+  for (size_t v = 0; v < vertices.size(); ++v) {
+    const glm::vec3 p = vertices[v].position;
+    const glm::i64vec3 c = cellOf(p, epsilon);
+    uint32_t found = UINT32_MAX;
+    for (int dz = -1; dz <= 1 && found == UINT32_MAX; ++dz)
+      for (int dy = -1; dy <= 1 && found == UINT32_MAX; ++dy)
+        for (int dx = -1; dx <= 1 && found == UINT32_MAX; ++dx) {
+          auto it = buckets.find(cellKey(c + glm::i64vec3(dx, dy, dz)));
+          if (it == buckets.end()) continue;
+          for (uint32_t w : it->second)
+            if (glm::all(glm::lessThanEqual(glm::abs(weldedPositions[w] - p), glm::vec3(epsilon)))) {
+              found = w;
+              break;
+            }
+        }
+    if (found == UINT32_MAX) {
+      found = static_cast<uint32_t>(weldedPositions.size());
+      weldedPositions.push_back(p);
+      buckets[cellKey(c)].push_back(found);
+    }
+    remap[v] = found;
+  }
+  weldedIndices.reserve(indices.size());
+  for (uint32_t i : indices) weldedIndices.push_back(remap[i]);
+}
+
+bool MeshData::isWelded() const {
+  return weldedIndices.size() == indices.size() && (indices.empty() || !weldedPositions.empty());
+}
+
 void MeshData::append(const MeshData& other, const glm::mat4& t) {
+  if (!isWelded()) weld();
+  MeshData weldedOther;
+  if (!other.isWelded()) {
+    weldedOther = other;
+    weldedOther.weld();
+  }
+  const MeshData& o = other.isWelded() ? other : weldedOther;
+  const auto weldedBase = static_cast<uint32_t>(weldedPositions.size());
+  for (glm::vec3 p : o.weldedPositions) weldedPositions.emplace_back(t * glm::vec4(p, 1));
+  for (uint32_t i : o.weldedIndices) weldedIndices.push_back(weldedBase + i);
   const auto base = static_cast<uint32_t>(vertices.size());
   const glm::mat3 nt = glm::transpose(glm::inverse(glm::mat3(t)));
   for (Vertex v : other.vertices) {
@@ -55,6 +129,7 @@ MeshData makePlane(float sx, float sz) {
   const float x = sx / 2, z = sz / 2;
   quad(m, {-x, 0, z}, {x, 0, z}, {x, 0, -z}, {-x, 0, -z}, {0, 1, 0});
   for (auto& v : m.vertices) v.uv *= glm::vec2(sx, sz);  // one texture repeat per unit
+  m.weld();
   return m;
 }
 
@@ -68,13 +143,15 @@ MeshData makeBox(const glm::vec3& h) {
       glm::vec3 c = n * h, du = u * h, dv = v * h;
       quad(m, c - du - dv, c + du - dv, c + du + dv, c - du + dv, n);
     }
+  m.weld();
   return m;
 }
 
 MeshData makeSphere(float r, int slices, int stacks) {
   return grid(slices, stacks, [r](glm::vec2 uv, Vertex& v) {
     float phi = uv.x * 2 * kPi, theta = uv.y * kPi;
-    v.normal = {std::sin(theta) * std::cos(phi), -std::cos(theta), -std::sin(theta) * std::sin(phi)};
+    const float s = uv.y == 0 || uv.y == 1 ? 0.0f : std::sin(theta);  // the poles are one point each
+    v.normal = {s * std::cos(phi), -std::cos(theta), -s * std::sin(phi)};
     v.position = v.normal * r;
   });
 }
@@ -99,6 +176,7 @@ MeshData makeCylinder(float r, float h, int slices) {
       m.indices.insert(m.indices.end(), {centre, a, b});
     }
   }
+  m.weld();
   return m;
 }
 
@@ -133,6 +211,7 @@ MeshData makeTreeCanopy() {
     quad(m, lo - u * 0.8f, lo + u * 0.8f, hi + u * 0.8f, hi - u * 0.8f, n);
     quad(m, lo + u * 0.8f, lo - u * 0.8f, hi - u * 0.8f, hi + u * 0.8f, -n);
   }
+  m.weld();
   return m;
 }
 
@@ -152,11 +231,75 @@ Mesh::Mesh(const MeshData& d) {
     glVertexArrayAttribBinding(vao, a, 0);
   }
   count_ = static_cast<GLsizei>(d.indices.size());
+  if (d.isWelded()) {
+    uploadWelded(d);
+  } else {
+    MeshData welded = d;
+    welded.weld();
+    uploadWelded(welded);
+  }
 }
 
 void Mesh::draw() const {
   glBindVertexArray(vao_.id());
   glDrawElements(GL_TRIANGLES, count_, GL_UNSIGNED_INT, nullptr);
+}
+
+void Mesh::uploadWelded(const MeshData& d) {
+  GLuint vao = 0;
+  glCreateVertexArrays(1, &vao);
+  weldedVao_ = VertexArray(vao);
+  weldedPositions_ = static_cast<uint32_t>(d.weldedPositions.size());
+  if (weldedPositions_ > 0) {
+    weldedVbo_ = makeBuffer(d.weldedPositions.size() * sizeof(glm::vec3), d.weldedPositions.data(), 0);
+    glVertexArrayVertexBuffer(vao, 0, weldedVbo_.id(), 0, sizeof(glm::vec3));
+  }
+  glEnableVertexArrayAttrib(vao, 0);
+  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(vao, 0, 0);
+  setWeldedIndices(d.weldedIndices, GL_TRIANGLES);
+}
+
+int indicesPerPrimitive(GLenum mode) {
+  switch (mode) {
+    case GL_POINTS:
+      return 1;
+    case GL_LINES:
+      return 2;
+    case GL_TRIANGLES:
+      return 3;
+    case GL_LINES_ADJACENCY:
+      return 4;
+    case GL_TRIANGLES_ADJACENCY:
+      return 6;
+    default:
+      char hex[16];
+      std::snprintf(hex, sizeof hex, "0x%04X", mode);
+      throw Error(std::string("primitive mode ") + hex +
+                  " is not an indexed list (expected GL_POINTS, GL_LINES, GL_LINES_ADJACENCY, GL_TRIANGLES or "
+                  "GL_TRIANGLES_ADJACENCY)");
+  }
+}
+
+void Mesh::setWeldedIndices(const std::vector<uint32_t>& indices, GLenum mode) {
+  const int per = indicesPerPrimitive(mode);
+  if (indices.size() % size_t(per) != 0)
+    throw Error(std::to_string(indices.size()) + " welded indices are not a whole number of primitives of " +
+                std::to_string(per) + " indices");
+  for (size_t k = 0; k < indices.size(); ++k)
+    if (indices[k] >= weldedPositions_)
+      throw Error("welded index " + std::to_string(k) + " is " + std::to_string(indices[k]) + ", but the mesh has " +
+                  std::to_string(weldedPositions_) + " welded positions");
+  weldedIbo_ = indices.empty() ? Buffer() : makeBuffer(indices.size() * sizeof(uint32_t), indices.data(), 0);
+  glVertexArrayElementBuffer(weldedVao_.id(), weldedIbo_.id());
+  weldedCount_ = static_cast<GLsizei>(indices.size());
+  weldedMode_ = mode;
+}
+
+void Mesh::drawWelded() const {
+  if (weldedCount_ == 0) return;
+  glBindVertexArray(weldedVao_.id());
+  glDrawElements(weldedMode_, weldedCount_, GL_UNSIGNED_INT, nullptr);
 }
 
 }  // namespace wb

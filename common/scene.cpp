@@ -219,4 +219,32 @@ void GpuScene::draw(const Program& program, int unit) const {
   }
 }
 
+void GpuScene::setIndices(size_t object, const std::vector<uint32_t>& indices, GLenum mode) {
+  if (object >= items_.size())
+    throw Error("GpuScene::setIndices: object " + std::to_string(object) + " does not exist (the scene has " +
+                std::to_string(items_.size()) + ")");
+  try {
+    items_[object].mesh.setWeldedIndices(indices, mode);
+  } catch (const Error& e) {
+    throw Error("GpuScene::setIndices: object " + std::to_string(object) + ": " + e.what());
+  }
+}
+
+size_t GpuScene::drawWelded(const Program& program, GLenum mode, bool depthClamp) const {
+  const GLboolean wasClamped = glIsEnabled(GL_DEPTH_CLAMP);
+  if (depthClamp && !wasClamped) glEnable(GL_DEPTH_CLAMP);
+  program.use();
+  program.set("u_hasTexture", 0);
+  size_t drawn = 0;
+  for (const auto& it : items_) {
+    if (it.mesh.weldedMode() != mode) continue;
+    program.set("u_model", it.model);
+    program.set("u_color", it.color);
+    it.mesh.drawWelded();
+    ++drawn;
+  }
+  if (depthClamp && !wasClamped) glDisable(GL_DEPTH_CLAMP);
+  return drawn;
+}
+
 }  // namespace wb

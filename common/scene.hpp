@@ -68,6 +68,20 @@ class GpuScene {
   void draw(const Program& program, int textureUnit = kAlbedoUnit) const;
   static constexpr int kAlbedoUnit = 15;  ///< GL 4.5 guarantees 16 texture units per stage
 
+  /// Number of objects; object i is objects[i] of the Scene this was built from.
+  size_t objectCount() const { return items_.size(); }
+  /// Gives object `object` the index buffer `indices` into its welded positions
+  /// (SceneObject::mesh.weldedPositions), drawn as `mode` by drawWelded(): lab 09 passes six per
+  /// triangle with GL_TRIANGLES_ADJACENCY. Throws wb::Error for a bad object, index or count.
+  void setIndices(size_t object, const std::vector<uint32_t>& indices, GLenum mode);
+  /// Draws the welded positions of every object whose welded index buffer is drawn as `mode`
+  /// (GL_TRIANGLES: its welded triangles, until setIndices() gives it another) with `program`,
+  /// setting u_model, u_color and u_hasTexture = 0. Only attribute 0 (position) is fed. With
+  /// `depthClamp`, GL_DEPTH_CLAMP is enabled for the draw (nothing is clipped at the near or far
+  /// plane: shadow volumes extruded to infinity keep their far cap) and put back as it was
+  /// afterwards; without it the depth-clamp state is left alone. Returns the number of objects drawn.
+  size_t drawWelded(const Program& program, GLenum mode, bool depthClamp = false) const;
+
  private:
   struct Item {
     Mesh mesh;
