@@ -1,6 +1,7 @@
 // The app hosts lab objects: a program can create one lab, draw it, and switch to another in the
 // same context, and the first lab's GL objects go before the context does (by ownership).
 #include "common/app.hpp"
+#include "common/context.hpp"
 #include "common/lab.hpp"
 #include "common/measurement.hpp"
 #include "common/variant.hpp"
