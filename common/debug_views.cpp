@@ -10,10 +10,13 @@ namespace wb {
 
 void DebugOptions::addTo(Settings& settings) {
   settings.addChoice("debug.view", view, {"camera", "light"}, "see the scene from the camera or from the light");
-  settings.add("debug.light_face", lightFace, 0, 7, "view from the light: which cube face or cascade");
   settings.add("debug.shadow_map", showMap,
                "show the shadow map in a corner (linearised; one inset per cascade, a cross for a cube map)");
   settings.add("debug.frustum", showFrustum, "draw the light's frustum (one per cube face or cascade) in the scene");
+}
+
+void DebugOptions::addLightFace(Settings& settings) {
+  settings.add("debug.light_face", lightFace, 0, 7, "view from the light: which cube face (0-5) or cascade");
 }
 
 DebugViews::DebugViews()

@@ -19,8 +19,10 @@ struct DebugOptions {
   int lightFace = 0;         ///< debug.light_face: the face or cascade the view from the light uses
   bool showMap = false;      ///< debug.shadow_map: the inset
   bool showFrustum = false;  ///< debug.frustum: the light's frustum lines
-  /// Registers the debug.* settings.
+  /// Registers the debug.* settings every lab with a shadow map has.
   void addTo(Settings& settings);
+  /// Registers debug.light_face, for labs whose light has several matrices (cube faces, cascades).
+  void addLightFace(Settings& settings);
 };
 
 /// Draws the debug views; needs a GL context.

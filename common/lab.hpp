@@ -117,6 +117,9 @@ class Lab {
   int shadowMapSize();
   /// Registers the shadow.bias setting (a constant depth bias), for labs whose shaders use it.
   void useDepthBias(float initial = 0.004f);
+  /// Registers debug.light_face (which face or cascade the view from the light shows), for labs
+  /// whose light has several matrices.
+  void useLightFaces() { debug_.addLightFace(settings); }
   /// The constant depth bias (useDepthBias() registers its setting).
   float depthBias() const { return bias_; }
   /// Texels of alpha-tested materials below this alpha are holes (setting alpha.cutoff); the exact
