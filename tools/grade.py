@@ -5,7 +5,10 @@ A submission is a folder or an archive (.zip, .tar, .tar.gz, .tgz) holding a stu
 workbook, or just its labs/ folder. Only the exercise files that labs/*/exercises.json names are
 taken from it; they are laid over this (instructor) tree in a grading build that has the framework
 prebuilt, so a submission costs one compile per lab. Each exercise's tests run in their own process
-with a time limit, without network, and as an unprivileged user when the grader runs as root.
+with a time limit, without network, and as an unprivileged user when the grader runs as root. A
+build that runs past --build-timeout is stopped and costs the exercises it was building; whatever
+else goes wrong with one submission (even a fault of the grader) is recorded in its results, never
+stops a batch.
 
 Outputs per submission (in --out): results.json (Gradescope, rewritten after every exercise so a
 crash mid-way leaves a valid file), junit.xml, report.md and report.html with the reference, result
@@ -27,6 +30,7 @@ import tarfile
 import tempfile
 import threading
 import time
+import traceback
 import zipfile
 from pathlib import Path
 from xml.sax.saxutils import escape, quoteattr
@@ -127,15 +131,22 @@ class Sandbox:
 
     def run(self, cmd, timeout, cwd=None, env=None):
         """(exit code or -signal, output, timed_out)."""
-        proc = subprocess.Popen(self.prefix + cmd, cwd=cwd, env=env, stdout=subprocess.PIPE,
-                                stderr=subprocess.STDOUT, start_new_session=True)
-        try:
-            out, _ = proc.communicate(timeout=timeout)
-            return proc.returncode, out.decode(errors="replace"), False
-        except subprocess.TimeoutExpired:
-            kill_session(proc.pid)  # the test binary and any lab it started (timeout(1) makes its own group)
-            out, _ = proc.communicate()
-            return -signal.SIGKILL, out.decode(errors="replace"), True
+        return run_killable(self.prefix + cmd, timeout, cwd=cwd, env=env)
+
+
+def run_killable(cmd, timeout, cwd=None, env=None):
+    """Runs cmd in its own session: (exit code or -signal, output, timed_out). On time-out the whole
+    session is killed (a test binary and any lab it started; a build's make and compilers), which
+    subprocess.run(timeout=...) would not do: it kills only its child and leaves the rest running."""
+    proc = subprocess.Popen(cmd, cwd=cwd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                            start_new_session=True)
+    try:
+        out, _ = proc.communicate(timeout=timeout)
+        return proc.returncode, out.decode(errors="replace"), False
+    except subprocess.TimeoutExpired:
+        kill_session(proc.pid)  # timeout(1) makes its own process group, hence the session
+        out, _ = proc.communicate()
+        return -signal.SIGKILL, out.decode(errors="replace"), True
 
 
 def kill_session(sid):
@@ -177,6 +188,18 @@ class Workspace:
             return
         target.parent.mkdir(parents=True, exist_ok=True)
         target.write_bytes(content)
+
+    def after_killed_build(self, labs):
+        """A build killed mid-way may leave a half-written object or executable that is newer than its
+        sources, which make would take as up to date: the executables go and the exercise files are
+        touched, so the next build of these labs redoes both."""
+        for lab in labs:
+            for name in (f"lab{lab['nn']}_submission", f"lab{lab['nn']}_submission_tests"):
+                (self.build / name).unlink(missing_ok=True)
+            for rel in student_files(lab):
+                target = self.submission / "labs" / lab["name"] / rel
+                if target.exists():
+                    target.touch()
 
     def prepare(self, jobs):
         """Configures and builds the framework, the solution apps and the submission variant (stubs)."""
@@ -243,26 +266,46 @@ def compiler_errors(output, limit=12):
 
 
 # --- Grading one submission -----------------------------------------------------------------------
-class Grader:
-    def __init__(self, ws, labs, sandbox, timeout, jobs):
-        self.ws, self.labs, self.sandbox, self.timeout = ws, labs, sandbox, timeout
-        self.build_jobs = self.test_jobs = max(1, jobs)  # cores for this submission
+BUILD_TIMED_OUT = "ERROR: the build timed out"
+DEFAULT_BUILD_TIMEOUT = 300  # seconds for one build of a submission's code (--build-timeout)
 
-    def build(self, labs, timeout=600):
-        """Builds the submission app and tests of `labs`: (ok, compiler output)."""
+
+def build_failure(output):
+    """What a failed build says about an exercise: the time-out message as it is, else the compiler's errors."""
+    return output if output.startswith(BUILD_TIMED_OUT) else compiler_errors(output)
+
+
+class Grader:
+    def __init__(self, ws, labs, sandbox, timeout, jobs, build_timeout=DEFAULT_BUILD_TIMEOUT):
+        self.ws, self.labs, self.sandbox, self.timeout = ws, labs, sandbox, timeout
+        self.build_timeout = build_timeout  # seconds for one build of the submission's code
+        self.build_jobs = self.test_jobs = max(1, jobs)  # cores for this submission
+        self.build_timeouts = 0  # how many builds of this submission were stopped
+
+    def build(self, labs):
+        """Builds the submission app and tests of `labs`: (ok, compiler output). A build that runs past
+        the build time limit (compile-time work that takes too long: template or constexpr recursion,
+        a huge file) is killed with its compilers and fails with a message that starts with
+        BUILD_TIMED_OUT."""
         targets = [t for lab in labs for t in (f"lab{lab['nn']}_submission", f"lab{lab['nn']}_submission_tests")]
-        r = subprocess.run(["cmake", "--build", str(self.ws.build), "-j", str(self.build_jobs), "--target"] + targets,
-                           capture_output=True, text=True, timeout=timeout)
-        return r.returncode == 0, r.stdout + r.stderr
+        code, out, timed_out = run_killable(
+            ["cmake", "--build", str(self.ws.build), "-j", str(self.build_jobs), "--target"] + targets,
+            self.build_timeout)
+        if timed_out:
+            self.build_timeouts += 1
+            self.ws.after_killed_build(labs)
+            return False, (f"{BUILD_TIMED_OUT} after {self.build_timeout} s and was stopped (compile-time work "
+                           "that takes too long, such as deep template or constexpr recursion, or a huge file?)")
+        return code == 0, out
 
     def build_lab(self, lab):
         return self.build([lab])
 
     def compile_lab(self, lab, files):
-        """Builds the lab from the student's files. When exercise.cpp does not compile, each C++
-        exercise is tried alone in the solution's file, so an error costs only the exercises it is
-        in. Returns {exercise id: compiler message} for the exercises that cannot be graded. The
-        student's `files` are already in place."""
+        """Builds the lab from the student's files. When exercise.cpp does not compile (or its build
+        runs past the time limit), each C++ exercise is tried alone in the solution's file, so an error
+        costs only the exercises it is in. Returns {exercise id: compiler message} for the exercises
+        that cannot be graded. The student's `files` are already in place."""
         ok, out = self.build_lab(lab)
         if ok:
             return {}
@@ -271,7 +314,7 @@ class Grader:
         mine = files.get("exercise.cpp", b"").decode(errors="replace")
         failed, good = {}, {}
         if "exercise.cpp" not in files or not solution.exists():
-            return {i: compiler_errors(out) for i in cpp_ids} or {e["id"]: compiler_errors(out) for e in lab["exercises"]}
+            return {i: build_failure(out) for i in cpp_ids} or {e["id"]: build_failure(out) for e in lab["exercises"]}
         base = solution.read_text()
         for ex_id in cpp_ids:
             hybrid = with_chunk(base, mine, ex_id)
@@ -283,7 +326,7 @@ class Grader:
             if ok:
                 good[ex_id] = True
             else:
-                failed[ex_id] = compiler_errors(out1)
+                failed[ex_id] = build_failure(out1)
         combined = base
         for ex_id in good:
             combined = with_chunk(combined, mine, ex_id)
@@ -292,13 +335,15 @@ class Grader:
         if not ok:  # the parts compile alone but not together: nothing C++ can be graded
             self.ws.place(lab["name"], "exercise.cpp", base.encode())
             ok, _ = self.build_lab(lab)
-            failed.update({i: compiler_errors(out2) for i in good})
+            failed.update({i: build_failure(out2) for i in good})
         if not ok:
-            return {e["id"]: compiler_errors(out) for e in lab["exercises"]}
+            return {e["id"]: build_failure(out) for e in lab["exercises"]}
         return failed
 
     def list_tests(self, lab):
         exe = self.ws.build / f"lab{lab['nn']}_submission_tests"
+        if not exe.exists():  # the lab could not be built at all (every exercise is then marked broken)
+            return []
         code, out, _ = self.sandbox.run([str(exe), "--gtest_list_tests"], 60, cwd=self.ws.build / "test-output")
         tests, suite = [], ""
         for line in out.splitlines():
@@ -370,16 +415,34 @@ class Grader:
         return self.grade_exercise(lab, e, tests, {})
 
     def grade(self, submission, out_dir, name):
+        """Grades one submission into out_dir and returns its result. Whatever goes wrong is recorded
+        in the result, never raised: an exception of the grader itself costs the exercises not graded
+        yet (with the exception as their reason), and the batch goes on."""
         t0 = time.time()
         out_dir.mkdir(parents=True, exist_ok=True)
         self.images = out_dir / "images"
         results = Results(out_dir, name, self.labs, self.sandbox)
+        try:
+            self.grade_into(results, submission)
+        except Exception as exc:  # a bug of the grader, or of the machine: this submission only
+            log(f"grade: the grader failed on {name}:\n{traceback.format_exc()}")
+            results.problems.append(grader_failed(exc))
+            results.fail_rest(f"ERROR: {grader_failed(exc)}; this exercise was not graded (a fault of the "
+                              "grader, not of the submission: tell the instructor)")
+        if self.build_timeouts:
+            n = self.build_timeouts
+            results.problems.append(f"{n} build{'s' if n > 1 else ''} of this submission ran past the build time "
+                                    f"limit of {self.build_timeout} s and {'were' if n > 1 else 'was'} stopped: the "
+                                    "exercises that could not be built scored 0")
+        return results.finish(time.time() - t0)
+
+    def grade_into(self, results, submission):
         with tempfile.TemporaryDirectory(prefix="grade-") as scratch:
             try:
                 folder = unpack(submission, scratch)
             except (ValueError, OSError, zipfile.BadZipFile, tarfile.TarError) as e:
                 results.fail_all(f"ERROR: the submission could not be read: {e}")
-                return results.finish(time.time() - t0)
+                return
             self.ws.reset_to_stubs()
             t_build = time.time()
             found_files = {}
@@ -396,17 +459,14 @@ class Grader:
                 found_files[lab["name"]] = (files, notes)
                 for rel, content in files.items():
                     self.ws.place(lab["name"], rel, content)
-            all_built, _ = self.build(self.labs, timeout=1200)  # one parallel build when every lab compiles
+            all_built, _ = self.build(self.labs)  # one parallel build when every lab compiles
             results.timing["build"] = time.time() - t_build
             t_tests = time.time()
             for lab in self.labs:
                 files, notes = found_files[lab["name"]]
                 broken = {}
                 if not all_built:
-                    try:
-                        broken = self.compile_lab(lab, files)
-                    except subprocess.TimeoutExpired:
-                        broken = {e["id"]: "ERROR: the build timed out" for e in lab["exercises"]}
+                    broken = self.compile_lab(lab, files)
                 tests = self.list_tests(lab)
                 with concurrent.futures.ThreadPoolExecutor(self.test_jobs) as pool:  # one process each
                     futures = {e["id"]: pool.submit(self.grade_exercise, lab, e, tests, broken) for e in lab["exercises"]}
@@ -427,7 +487,10 @@ class Grader:
                     ok, failures, kept, hidden_result, has_hidden = outcome[e["id"]]
                     results.add(lab, e, ok, failures, kept, notes, hidden_result=hidden_result, hidden=has_hidden)
             results.timing["tests"] = time.time() - t_tests
-        return results.finish(time.time() - t0)
+
+
+def grader_failed(exc):
+    return f"the grader failed on this submission: {type(exc).__name__}: {exc}".rstrip(": ")
 
 
 def runs_app(outcome):
@@ -476,6 +539,7 @@ class Results:
         self.out, self.name, self.labs, self.sandbox = out_dir, name, labs, sandbox
         self.entries = []  # one per exercise (and one per exercise's held-out tests)
         self.timing = {"build": 0.0, "tests": 0.0}
+        self.problems = []  # what stopped the grading of some of it (build time-outs, grader failures)
         self.max_score = sum(e["points"] for l in labs for e in l["exercises"] if not e.get("extension"))
         self.write_json(partial=True)
 
@@ -483,6 +547,14 @@ class Results:
         for lab in self.labs:
             for e in lab["exercises"]:
                 self.add(lab, e, False, [("", message)], [], [])
+
+    def fail_rest(self, message):
+        """Every exercise that has no result yet fails with `message` (those graded keep theirs)."""
+        graded = {(x["lab"], x["id"]) for x in self.entries}
+        for lab in self.labs:
+            for e in lab["exercises"]:
+                if (lab["name"], e["id"]) not in graded:
+                    self.add(lab, e, False, [("", message)], [], [])
 
     def add(self, lab, e, ok, failures, images, notes, hidden_result=None, hidden=False):
         hidden_points = lab["hidden_points"].get(e["id"], 0) if hidden else 0
@@ -520,7 +592,8 @@ class Results:
         done = len({(x["lab"], x["id"]) for x in self.entries})
         total = sum(len(l["exercises"]) for l in self.labs)
         summary = (f"Graded {done} of {total} exercises so far (grading stopped or is still running)." if partial
-                   else f"{self.score()} of {self.max_score} points.")
+                   else f"{self.score()} of {self.max_score} points." +
+                   "".join(f"\n\n**Note:** {p}." for p in self.problems))
         doc = {"score": self.score(), "max_score": self.max_score, "output": summary, "output_format": "md",
                "visibility": "visible", "stdout_visibility": "hidden", "tests": tests}
         if not partial:
@@ -534,7 +607,7 @@ class Results:
         self.write_junit(elapsed)
         self.write_reports(elapsed)
         return {"name": self.name, "score": self.score(), "max_score": self.max_score, "entries": self.entries,
-                "seconds": elapsed, "timing": self.timing}
+                "seconds": elapsed, "timing": self.timing, "problems": self.problems}
 
     def write_junit(self, elapsed):
         parts = ['<?xml version="1.0" encoding="UTF-8"?>',
@@ -561,8 +634,10 @@ class Results:
               f"{self.timing['build']:.0f} s, tests {self.timing['tests']:.0f} s; tests ran as "
               f"{self.sandbox.user}, each exercise in its own process)."]
         md += [f"- note: {n}" for n in self.sandbox.notes]
+        md += [f"- **{p}**" for p in self.problems]
         body = [f"<h1>Grading report: {html.escape(self.name)}</h1>",
                 f"<p><b>{self.score()} of {self.max_score} points</b> (graded in {elapsed:.0f} s)</p>"]
+        body += [f"<p><b>{html.escape(p)}</b></p>" for p in self.problems]
         for lab in self.labs:
             mine = [x for x in self.entries if x["lab"] == lab["name"]]
             md += ["", f"## Lab {lab['nn']}: {lab['title']}", "", "| exercise | status | points |", "|---|---|---|"]
@@ -622,7 +697,57 @@ def write_batch_outputs(out, results, labs):
     md += ["", "| student | score | seconds (build + tests) |", "|---|---|---|"]
     md += [f"| {r['name']} | {r['score']} / {r['max_score']} | {r['seconds']:.1f} ({r['timing']['build']:.1f} + "
            f"{r['timing']['tests']:.1f}) |" for r in sorted(results, key=lambda r: r["name"])]
+    troubled = [r for r in sorted(results, key=lambda r: r["name"]) if r.get("problems")]
+    if troubled:
+        md += ["", "Not everything could be graded (what was not graded scored 0; see each report):", ""]
+        md += [f"- {r['name']}: {'; '.join(r['problems'])}" for r in troubled]
     (out / "summary.md").write_text("\n".join(md) + "\n")
+
+
+def grade_all(subs, spaces, grade_one, fail_one, progress=None):
+    """Grades every submission, as many at once as there are workspaces: grade_one(workspace, sub)
+    returns a result. An exception that escapes it (Grader.grade records its own, so this is the last
+    line of defence) becomes the result fail_one(sub, message), and the others go on. A workspace
+    always goes back to the pool. Returns the results in the order of subs."""
+    free, lock = list(spaces), threading.Lock()
+
+    def one(sub):
+        with lock:
+            ws = free.pop()
+        t0 = time.time()
+        try:
+            r = grade_one(ws, sub)
+        except (Exception, SystemExit) as exc:
+            log(f"\ngrade: the grader failed on {sub}:\n{traceback.format_exc()}")
+            r = fail_one(sub, grader_failed(exc), time.time() - t0)
+        finally:
+            with lock:
+                free.append(ws)
+        if progress:
+            with lock:
+                progress(r)
+        return r
+
+    with concurrent.futures.ThreadPoolExecutor(max(1, len(spaces))) as pool:
+        return list(pool.map(one, subs))
+
+
+def salvage(out_dir, name, labs, sandbox, problem, elapsed):
+    """The result of a submission whose grading failed outside Grader.grade's own handling: every
+    exercise scores 0 with the reason, written as results.json and reports when the disk allows."""
+    results = None
+    try:
+        out_dir.mkdir(parents=True, exist_ok=True)
+        results = Results(out_dir, name, labs, sandbox)
+        results.problems.append(problem)
+        results.fail_all(f"ERROR: {problem}; nothing was graded (a fault of the grader, not of the "
+                         "submission: tell the instructor)")
+        return results.finish(elapsed)
+    except Exception as exc:
+        log(f"grade: could not write the results of {name} either: {exc}")
+        return {"name": name, "score": 0, "max_score": results.max_score if results else 0,
+                "entries": results.entries if results else [], "seconds": elapsed,
+                "timing": {"build": 0.0, "tests": 0.0}, "problems": [problem]}
 
 
 def main():
@@ -634,6 +759,9 @@ def main():
     ap.add_argument("--labs", help="only these labs, e.g. 01,02")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2, help="submissions graded at once (batch)")
     ap.add_argument("--timeout", type=int, default=60, help="seconds for one exercise's tests")
+    ap.add_argument("--build-timeout", type=int, default=DEFAULT_BUILD_TIMEOUT,
+                    help="seconds for one build of a submission's code; a build that runs longer is stopped and "
+                         f"costs the exercises it was building (default {DEFAULT_BUILD_TIMEOUT})")
     ap.add_argument("--name", help="the student's name in the reports (default: the submission's name)")
     args = ap.parse_args()
     only = [x.strip().zfill(2) for x in args.labs.split(",")] if args.labs else None
@@ -665,43 +793,51 @@ def main():
         log(f"grade: preparing the grading build {ws.dir} (the first time builds the framework) ...")
         secs = ws.prepare(max(1, (os.cpu_count() or 2)))
         log(f"grade: ready in {secs:.0f} s")
-    free = list(spaces)
-    lock = threading.Lock()
-    done, results = [0], []
+    done = [0]
 
-    def one(sub):
-        with lock:
-            ws = free.pop()
-        try:
-            name = args.name or sub.name.split(".")[0]
-            cores = max(1, (os.cpu_count() or 2) // workers)
-            r = Grader(ws, labs, sandbox, args.timeout, cores).grade(sub, out / name if args.batch else out, name)
-        finally:
-            with lock:
-                free.append(ws)
-        with lock:
-            done[0] += 1
-            results.append(r)
-            print(f"\r[{done[0]}/{len(subs)}] {r['name']}: {r['score']} of {r['max_score']} "
-                  f"({r['seconds']:.0f} s)" + " " * 20, end="" if args.batch else "\n", file=sys.stderr, flush=True)
-        return r
+    def where(sub):
+        name = args.name or sub.name.split(".")[0]
+        return name, (out / name if args.batch else out)
+
+    def grade_one(ws, sub):
+        name, dest = where(sub)
+        cores = max(1, (os.cpu_count() or 2) // workers)
+        return Grader(ws, labs, sandbox, args.timeout, cores, args.build_timeout).grade(sub, dest, name)
+
+    def fail_one(sub, problem, elapsed):
+        name, dest = where(sub)
+        return salvage(dest, name, labs, sandbox, problem, elapsed)
+
+    def progress(r):
+        done[0] += 1
+        print(f"\r[{done[0]}/{len(subs)}] {r['name']}: {r['score']} of {r['max_score']} "
+              f"({r['seconds']:.0f} s)" + " " * 20, end="" if args.batch else "\n", file=sys.stderr, flush=True)
 
     t0 = time.time()
-    with concurrent.futures.ThreadPoolExecutor(workers) as pool:
-        list(pool.map(one, subs))
+    results = grade_all(subs, spaces, grade_one, fail_one, progress)
+    failed = [r["name"] for r in results if any(p.startswith("the grader failed") for p in r.get("problems", []))]
     if args.batch:
         log("")
         write_batch_outputs(out, results, labs)
         log(f"grade: {len(subs)} submissions in {time.time() - t0:.0f} s; wrote {out / 'gradebook.csv'} and "
             f"{out / 'summary.md'}")
+        for r in results:
+            for problem in r.get("problems", []):
+                log(f"grade: {r['name']}: {problem}")
     else:
         r = results[0]
         for x in r["entries"]:
             log(f"  {x['id']:<5} {x['title'][:52]:<52} {x['status']:<16} {x['score']:>3} / {x['points']}  "
                 f"{first_line(x['failures'][0][1])[:70] if x['failures'] else ''}")
+        for problem in r.get("problems", []):
+            log(f"grade: {problem}")
         log(f"grade: {r['score']} of {r['max_score']} points in {r['seconds']:.1f} s; wrote {out}/results.json, "
             f"junit.xml, report.md, report.html")
-    return 0
+    if failed:  # every result is written, but the grader has a bug to look at
+        log(f"grade: the grader itself failed on {', '.join(failed)} (the tracebacks are above)")
+    # A batch says so in its exit code; one submission (Gradescope's run_autograder) keeps exit 0,
+    # since its results.json is written and already says what was not graded.
+    return 1 if failed and args.batch else 0
 
 
 if __name__ == "__main__":

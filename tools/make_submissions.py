@@ -9,6 +9,9 @@
   segfault             full, with a null-pointer write in one C++ exercise
   endless_loop_cpp     full, with a loop that never ends in one C++ exercise
   endless_loop_glsl    full, with a loop that never ends in one GLSL exercise
+  endless_build        full, with legal C++ in one exercise that takes GCC a quarter of an hour to
+                       compile: its build runs into the grader's --build-timeout (three times: the
+                       build of every lab, of its lab, of that exercise alone) and loses that exercise
   archive.zip          full, zipped inside a top folder (as students upload it), missing one file
 
 DIR/expected.json gives the score each should get and the exercises it should lose, computed from
@@ -49,6 +52,14 @@ def edit(dest, lab, rel, ex_id, transform):
     at = text.index(f"// EXERCISE {ex_id}")
     brace = text.index("{\n", text.index(")", at)) + 2  # the first function body after the marker
     path.write_text(text[:brace] + transform + text[brace:])
+
+
+def insert_after_marker(dest, lab, rel, ex_id, text):
+    """Inserts `text` on the line after exercise `ex_id`'s marker (in its chunk, before its code)."""
+    path = dest / "labs" / lab / rel
+    content = path.read_text()
+    at = content.index("\n", content.index(f"// EXERCISE {ex_id}")) + 1
+    path.write_text(content[:at] + text + content[at:])
 
 
 def main():
@@ -115,6 +126,32 @@ def main():
         d = full("endless_loop_cpp")
         edit(d, lab, e["file"], e["id"], "  for (volatile bool forever = true; forever;) {\n  }\n")
         expect("endless_loop_cpp", [e["id"]])
+        d = full("endless_build")
+        # Legal C++ that takes GCC a quarter of an hour or more to compile: 800 template
+        # instantiations (under the default -ftemplate-depth of 900), each with a constant
+        # expression of 1.5 million loop steps (under GCC 12's -fconstexpr-ops-limit of 2^25 for
+        # one expression, about a second each), memory flat at ~20 MB. Put before the exercise's
+        # function, in its chunk, so the grader's build of that exercise alone runs long too.
+        insert_after_marker(d, lab, e["file"], e["id"], """\
+template <int N>
+constexpr int compileTimeWork() {
+  int s = N;
+  for (int i = 0; i < 1500; ++i)
+    for (int j = 0; j < 1000; ++j) s = (s + (i ^ j)) & 1023;
+  return s;
+}
+template <int N>
+struct CompileTimeSteps {
+  static_assert(compileTimeWork<N>() >= 0, "every step is a constant expression of its own");
+  static constexpr int value = CompileTimeSteps<N - 1>::value + 1;
+};
+template <>
+struct CompileTimeSteps<0> {
+  static constexpr int value = 0;
+};
+static_assert(CompileTimeSteps<800>::value == 800, "800 steps");
+""")
+        expect("endless_build", [e["id"]])
     if glsl:
         lab, e = glsl
         d = full("endless_loop_glsl")
@@ -145,6 +182,9 @@ def main():
 
     (out / "expected.json").write_text(json.dumps(expected, indent=2) + "\n")
     print(f"wrote {len(expected)} submissions to {out} (expected scores in expected.json)")
+    if "endless_build" in expected:
+        print("endless_build runs into the grader's build time limit three times: grade it with a low one, "
+              "e.g. ./workbook grade --batch DIR --build-timeout 20")
 
 
 if __name__ == "__main__":

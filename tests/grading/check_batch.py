@@ -18,10 +18,13 @@ def check(cond, what):
 
 # The reason each broken submission must give for the exercise it loses.
 reasons = {"compile_error": "does not compile", "segfault": "SIGSEGV", "endless_loop_cpp": "timed out",
-           "endless_loop_glsl": ("timed out", "WRONG"),  # llvmpipe ends any shader loop after 65535 turns "one_wrong": "WRONG", "stubs": "NOT IMPLEMENTED",
-           "archive": "not in the submission"}
+           "endless_loop_glsl": ("timed out", "WRONG"),  # llvmpipe ends any shader loop after 65535 turns
+           "one_wrong": "WRONG", "stubs": "NOT IMPLEMENTED", "archive": "not in the submission",
+           "endless_build": "the build timed out after"}
 
 rows = {r["student"]: r for r in csv.DictReader(open(grades / "gradebook.csv"))}
+check(sorted(rows) == sorted(expected), f"the gradebook lists {sorted(rows)}, expected every submission: "
+      f"{sorted(expected)}")
 for name, want in expected.items():
     results_file = grades / name / "results.json"
     check(results_file.exists(), f"{name}: no results.json")
