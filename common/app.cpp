@@ -203,7 +203,8 @@ void App::handleKeys() {
   };
   Lab& lab = *lab_;
   for (int k = 0; k < 9; ++k)
-    if (pressed(GLFW_KEY_1 + k) && k < int(lab.scene.cameras.size())) lab.bookmark_ = k, lab.camera.pose = lab.scene.cameras[size_t(k)];
+    if (pressed(GLFW_KEY_1 + k) && k < int(lab.scene.cameras.size()))
+      lab.bookmark_ = k, lab.camera.pose = lab.scene.cameras[size_t(k)];
   if (pressed(GLFW_KEY_F12) || pressed(GLFW_KEY_P)) screenshotRequested_ = true;
   if (pressed(GLFW_KEY_H)) shell_.hidePanels = !shell_.hidePanels;
 }

@@ -59,8 +59,8 @@ void writeBench(const std::string& path, const std::string& lab, glm::ivec2 size
   const std::string renderer = Context::renderer(), where = std::to_string(size.x) + "x" + std::to_string(size.y);
   csv << "lab,renderer,size,pass,gpu_ms_mean,gpu_ms_min,gpu_ms_max,frames\n";
   if (print) {
-    std::printf("lab %s on %s, %s, %d frames measured after %d warm-up\n", lab.c_str(), renderer.c_str(),
-                where.c_str(), wall.frames, wall.warmup);
+    std::printf("lab %s on %s, %s, %d frames measured after %d warm-up\n", lab.c_str(), renderer.c_str(), where.c_str(),
+                wall.frames, wall.warmup);
     std::printf("  %-14s %10s %10s %10s\n", "pass", "mean ms", "min ms", "max ms");
   }
   for (const auto& [name, s] : timers.passes()) {

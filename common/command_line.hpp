@@ -20,23 +20,23 @@ struct CompareChoice {
 
 /// Everything the command line can ask for.
 struct Options {
-  bool help = false;            ///< --help: print the usage and exit
-  bool headless = false;        ///< --headless: EGL, no window
-  bool listSettings = false;    ///< --list-settings: print the settings and exit
-  bool metrics = false;         ///< --metrics: measure against exact visibility
-  bool quiet = false;           ///< --quiet: no human-readable text on stdout
-  std::string scene;            ///< --scene FILE ("" = the lab's default)
-  std::string screenshot;       ///< --screenshot F.png
-  std::string visibility;       ///< --dump-visibility F.pfm
-  std::string bench;            ///< --bench F.csv
-  std::string heatmap;          ///< --heatmap F.png (implies --metrics)
-  std::string record;           ///< --record F.json: the machine-readable result of the run
-  std::string sweepCsv;         ///< --sweep-csv F.csv
-  glm::ivec2 size{960, 540};    ///< --size WxH
-  int frames = -1;              ///< --frames N (-1: until the window closes; headless 1, bench 60)
+  bool help = false;              ///< --help: print the usage and exit
+  bool headless = false;          ///< --headless: EGL, no window
+  bool listSettings = false;      ///< --list-settings: print the settings and exit
+  bool metrics = false;           ///< --metrics: measure against exact visibility
+  bool quiet = false;             ///< --quiet: no human-readable text on stdout
+  std::string scene;              ///< --scene FILE ("" = the lab's default)
+  std::string screenshot;         ///< --screenshot F.png
+  std::string visibility;         ///< --dump-visibility F.pfm
+  std::string bench;              ///< --bench F.csv
+  std::string heatmap;            ///< --heatmap F.png (implies --metrics)
+  std::string record;             ///< --record F.json: the machine-readable result of the run
+  std::string sweepCsv;           ///< --sweep-csv F.csv
+  glm::ivec2 size{960, 540};      ///< --size WxH
+  int frames = -1;                ///< --frames N (-1: until the window closes; headless 1, bench 60)
   std::vector<std::string> sets;  ///< --set key=value, in order
   std::vector<std::pair<std::string, std::vector<std::string>>> sweeps;  ///< --sweep key=a,b,...
-  CompareChoice compare;        ///< --compare key=a,b
+  CompareChoice compare;                                                 ///< --compare key=a,b
 };
 
 /// Parses the arguments after argv[0]; throws wb::UsageError naming the bad argument and what is

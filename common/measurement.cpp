@@ -125,8 +125,7 @@ MeasureResult Measurement::measure(const MeasureInput& in) {
                "pixels drawn lit)\ncontact gap %s texels\nlight in shadows %.2f%% (mean visibility where the light "
                "is blocked)\n(exact visibility by ray casting, %.0f ms)",
                100 * m.acneRate(), m.acnePixels, m.litPixels, 100 * m.leakRate(), m.leakPixels, m.shadowedPixels,
-               r.gapTexels < 0 ? "n/a" : strf("%.1f", r.gapTexels).c_str(), 100 * m.meanShadowLight(),
-               r.milliseconds) +
+               r.gapTexels < 0 ? "n/a" : strf("%.1f", r.gapTexels).c_str(), 100 * m.meanShadowLight(), r.milliseconds) +
            "\n" + pcfText + split;
   r.heatmap = artifactHeatmap(rendered, exact, positions);
   return r;

@@ -20,13 +20,13 @@ namespace wb {
 
 /// What one measurement found.
 struct MeasureResult {
-  VisibilityMetrics metrics;       ///< acne, leak, light in shadows (whole frame)
-  double gapTexels = -1;           ///< contact gap in texels, −1 when not defined for this light
-  ReferenceDifference reference;   ///< against PCF (pixels = 0 when not defined)
-  std::string notes;               ///< why a measurement was skipped, if one was
-  std::string text;                ///< the whole result for people
-  std::vector<uint8_t> heatmap;    ///< RGBA8: acne red, leaks blue (rows bottom to top)
-  double milliseconds = 0;         ///< time the measurement took
+  VisibilityMetrics metrics;      ///< acne, leak, light in shadows (whole frame)
+  double gapTexels = -1;          ///< contact gap in texels, −1 when not defined for this light
+  ReferenceDifference reference;  ///< against PCF (pixels = 0 when not defined)
+  std::string notes;              ///< why a measurement was skipped, if one was
+  std::string text;               ///< the whole result for people
+  std::vector<uint8_t> heatmap;   ///< RGBA8: acne red, leaks blue (rows bottom to top)
+  double milliseconds = 0;        ///< time the measurement took
   /// The numbers as JSON: acne_percent, leak_percent, shadow_light_percent, contact_gap_texels
   /// (null when not defined), pcf_diff_percent and pcf_lighter_percent (null when not defined).
   nlohmann::json toJson() const;
@@ -34,13 +34,13 @@ struct MeasureResult {
 
 /// The state one frame is measured in.
 struct MeasureInput {
-  const FrameTarget& target;  ///< the frame, with visibility and positions
-  const Scene& scene;         ///< the scene the rays are cast against
-  float alphaCutoff;          ///< the alpha test the renderer used
-  const LightView& light;     ///< the light and map of the (right half of the) frame
-  const Light& sceneLight;    ///< the light to use when the lab showed none
-  const CompareChoice& split; ///< split screen, if on
-  const LightView* sides;     ///< in split screen: the left and right halves' lights (two)
+  const FrameTarget& target;   ///< the frame, with visibility and positions
+  const Scene& scene;          ///< the scene the rays are cast against
+  float alphaCutoff;           ///< the alpha test the renderer used
+  const LightView& light;      ///< the light and map of the (right half of the) frame
+  const Light& sceneLight;     ///< the light to use when the lab showed none
+  const CompareChoice& split;  ///< split screen, if on
+  const LightView* sides;      ///< in split screen: the left and right halves' lights (two)
 };
 
 /// Measures frames; keeps the ray-cast scene and the PCF reference between calls.

@@ -31,14 +31,14 @@ class RunRecord {
 
 /// A record as the harness reads it back.
 struct RunResult {
-  std::string status;                                 ///< "ok", "usage_error", "context_error" or "error"
-  std::string error;                                  ///< the error message, if the run failed
-  std::map<std::string, std::string> exerciseStates;  ///< id → "implemented", "not_implemented", "failed", ...
+  std::string status;                                   ///< "ok", "usage_error", "context_error" or "error"
+  std::string error;                                    ///< the error message, if the run failed
+  std::map<std::string, std::string> exerciseStates;    ///< id → "implemented", "not_implemented", "failed", ...
   std::map<std::string, std::string> exerciseMessages;  ///< id → why it is not implemented or failed
-  std::optional<double> acnePercent;                  ///< measurement (with --metrics)
-  std::optional<double> leakPercent;                  ///< measurement (with --metrics)
-  std::optional<double> gapTexels;                    ///< measurement, when defined for the light
-  std::optional<double> shadowLightPercent;           ///< measurement (with --metrics)
+  std::optional<double> acnePercent;                    ///< measurement (with --metrics)
+  std::optional<double> leakPercent;                    ///< measurement (with --metrics)
+  std::optional<double> gapTexels;                      ///< measurement, when defined for the light
+  std::optional<double> shadowLightPercent;             ///< measurement (with --metrics)
 };
 
 /// Reads a record written by RunRecord::write; throws wb::Error if it is missing or malformed.

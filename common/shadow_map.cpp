@@ -39,7 +39,8 @@ Framebuffer depthFramebuffer(GLuint texture, int layer) {
   else
     glNamedFramebufferTextureLayer(id, GL_DEPTH_ATTACHMENT, texture, 0, layer);
   const GLenum status = glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE) throw Error("shadow map framebuffer incomplete (0x" + std::to_string(status) + ")");
+  if (status != GL_FRAMEBUFFER_COMPLETE)
+    throw Error("shadow map framebuffer incomplete (0x" + std::to_string(status) + ")");
   return fbo;
 }
 
@@ -104,7 +105,8 @@ void ShadowMapArray::resize(int size, int layers) {
 
 void ShadowMapArray::begin(int layer) const {
   if (layer < 0 || layer >= layers_)
-    throw Error("ShadowMapArray::begin: layer " + std::to_string(layer) + " is not in 0.." + std::to_string(layers_ - 1));
+    throw Error("ShadowMapArray::begin: layer " + std::to_string(layer) + " is not in 0.." +
+                std::to_string(layers_ - 1));
   bindAndClear(fbos_[size_t(layer)], size_);
 }
 

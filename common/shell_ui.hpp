@@ -31,13 +31,13 @@ struct ShellState {
 
 /// What the shell reads from the hosted lab this frame.
 struct ShellInput {
-  const ExerciseBoard& board;               ///< exercise states
-  const GpuTimers& timers;                  ///< GPU time per pass
-  const std::list<Program>& programs;       ///< for their compile errors
-  const std::vector<std::string>& warnings; ///< the lab's warnings
-  Settings& settings;                       ///< the lab's settings (edited here)
-  glm::ivec2 frameSize;                     ///< where the windows go
-  std::function<void()> labUi;              ///< the lab's own widgets
+  const ExerciseBoard& board;                ///< exercise states
+  const GpuTimers& timers;                   ///< GPU time per pass
+  const std::list<Program>& programs;        ///< for their compile errors
+  const std::vector<std::string>& warnings;  ///< the lab's warnings
+  Settings& settings;                        ///< the lab's settings (edited here)
+  glm::ivec2 frameSize;                      ///< where the windows go
+  std::function<void()> labUi;               ///< the lab's own widgets
 };
 
 /// Draws the info panel and the Settings window (inside an ImGui frame).

@@ -20,7 +20,9 @@ class SolidLab : public wb::Lab {
   static inline int alive = 0;
 
  protected:
-  void init() override { program_ = &loadProgram({{GL_VERTEX_SHADER, "wb/scene.vert"}, {GL_FRAGMENT_SHADER, "wb/flat.frag"}}); }
+  void init() override {
+    program_ = &loadProgram({{GL_VERTEX_SHADER, "wb/scene.vert"}, {GL_FRAGMENT_SHADER, "wb/flat.frag"}});
+  }
   void render() override {
     bindFrameTarget();
     glClearBufferfv(GL_COLOR, 0, &colour_.x);

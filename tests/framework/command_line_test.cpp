@@ -27,9 +27,9 @@ TEST(CommandLineTable, UsageListsEveryAcceptedOption) {
 }
 
 TEST(CommandLineTable, ValuesAreParsedAndCheckedByTheTable) {
-  const char* argv[] = {"lab",   "--headless", "--size",    "64x48",          "--set",    "a=1",
-                        "--set", "b=2",        "--compare", "k=x,y",          "--sweep",  "s=1,2,3",
-                        "--frames", "5",       "--record",  "r.json",         "--quiet"};
+  const char* argv[] = {"lab",      "--headless", "--size",    "64x48",  "--set",   "a=1",
+                        "--set",    "b=2",        "--compare", "k=x,y",  "--sweep", "s=1,2,3",
+                        "--frames", "5",          "--record",  "r.json", "--quiet"};
   const wb::Options o = wb::parseCommandLine(int(std::size(argv)), argv);
   EXPECT_TRUE(o.headless && o.quiet);
   EXPECT_EQ(o.size, glm::ivec2(64, 48));

@@ -212,8 +212,8 @@ TEST(RunRecord, CarriesEverythingWithoutTheTextForPeople) {
   EXPECT_EQ(run.exerciseStates.at("01.4"), "not_implemented") << "the student edition's 01.4 is a stub";
   if (!*wb::variant::kSolutionExe) return;
   const fs::path measured = scratch("cli") / "measured.json";
-  const LabResult m = runLab("--headless --quiet --metrics --size 160x90 --record " + measured.string(),
-                             wb::variant::kSolutionExe);
+  const LabResult m =
+      runLab("--headless --quiet --metrics --size 160x90 --record " + measured.string(), wb::variant::kSolutionExe);
   EXPECT_EQ(m.code, 0) << m.output;
   EXPECT_EQ(m.output.find("acne"), std::string::npos) << m.output;
   const wb::RunResult sol = wb::readRunRecord(measured);
@@ -281,9 +281,9 @@ TEST(GroundTruth, TheSolutionsAcneAndLeaksFollowTheBias) {
   if (!*wb::variant::kSolutionExe) GTEST_SKIP() << "no solution build in this edition";
   auto rates = [](const std::string& bias) {
     const fs::path record = scratch("cli") / ("bias_" + bias + ".json");
-    const LabResult r = runLab("--headless --size 320x180 --metrics --record " + record.string() +
-                                   " --set shadow.bias=" + bias,
-                               wb::variant::kSolutionExe);
+    const LabResult r =
+        runLab("--headless --size 320x180 --metrics --record " + record.string() + " --set shadow.bias=" + bias,
+               wb::variant::kSolutionExe);
     EXPECT_EQ(r.code, 0) << r.output;
     const wb::RunResult run = wb::readRunRecord(record);
     return std::make_pair(run.acnePercent.value_or(-1), run.leakPercent.value_or(-1));

@@ -128,7 +128,8 @@ TEST_F(GlTest, ShadowMapArrayRendersEachLayer) {
   array.resize(32, 2);
   std::vector<glm::mat4> layers;
   for (float h : {1.0f, 3.0f})
-    layers.push_back(glm::ortho(-4.0f, 4.0f, -4.0f, 4.0f, 0.0f, 4.0f) * glm::lookAt(glm::vec3(0, h, 0), glm::vec3(0), {0, 0, -1}));
+    layers.push_back(glm::ortho(-4.0f, 4.0f, -4.0f, 4.0f, 0.0f, 4.0f) *
+                     glm::lookAt(glm::vec3(0, h, 0), glm::vec3(0), {0, 0, -1}));
   for (int k = 0; k < 2; ++k) {
     array.begin(k);
     depth.set("u_lightViewProj", layers[size_t(k)]);
@@ -181,8 +182,7 @@ TEST_F(GlTest, MeasurementsOfOneShapeAreSkippedForOthers) {
   const wb::LightView light = cube.describe(scene.lights[0], faceMatrices({0, 2, 0}, 0.5f, 10), true);
   const wb::CompareChoice none;
   wb::Measurement measurement;
-  const wb::MeasureResult r =
-      measurement.measure({target, scene, 0.5f, light, scene.lights[0], none, nullptr});
+  const wb::MeasureResult r = measurement.measure({target, scene, 0.5f, light, scene.lights[0], none, nullptr});
   EXPECT_EQ(r.gapTexels, -1);
   EXPECT_EQ(r.reference.pixels, 0);
   EXPECT_NE(r.notes.find("cube map"), std::string::npos) << r.notes;

@@ -107,7 +107,8 @@ static ::testing::AssertionResult runIsolated(const std::string& id, const fs::p
   const fs::path log = out / "lab.log", record = out / "run.json";
   fs::remove(record);
   // From its output folder: a headless run without --screenshot writes labNN.png where it runs.
-  std::string cmd = "cd " + quote(out.string()) + " && " + env + "timeout 120 " + quote(exe) + " --headless --record " + quote(record.string());
+  std::string cmd = "cd " + quote(out.string()) + " && " + env + "timeout 120 " + quote(exe) + " --headless --record " +
+                    quote(record.string());
   for (const auto& a : args) cmd += " " + quote(a);
   const int status = std::system((cmd + " >" + quote(log.string()) + " 2>&1").c_str());
   const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128;
