@@ -3,6 +3,7 @@
 #include "common/context.hpp"
 #include "common/error.hpp"
 #include "common/settings.hpp"
+#include "common/strf.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -12,13 +13,6 @@
 
 namespace wb {
 namespace {
-
-template <typename... Args>
-std::string strf(const char* format, Args... args) {
-  char text[128];
-  std::snprintf(text, sizeof text, format, args...);
-  return text;
-}
 
 // One row of the sweep table, printed as Markdown and (when open) written as CSV.
 void row(const std::vector<std::string>& cells, std::ofstream& csv) {

@@ -25,18 +25,9 @@ DebugViews::DebugViews()
       insetArray_({{GL_VERTEX_SHADER, "wb/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "wb/depth_view.frag"}},
                   "#define WB_ARRAY 1\n"),
       cube_({{GL_VERTEX_SHADER, "wb/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "wb/cube_view.frag"}}),
-      overlay_({{GL_VERTEX_SHADER, "wb/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "wb/overlay.frag"}}) {
-  GLuint id = 0;
-  glCreateVertexArrays(1, &id);
-  vao_ = VertexArray(id);
-  glCreateSamplers(1, &id);
-  plain_ = Sampler(id);
-  glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-  for (GLenum axis : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
-    glSamplerParameteri(id, axis, GL_CLAMP_TO_EDGE);
-}
+      overlay_({{GL_VERTEX_SHADER, "wb/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "wb/overlay.frag"}}),
+      vao_(makeEmptyVertexArray()),
+      plain_(makePlainSampler()) {}
 
 glm::mat4 DebugViews::fromLight(const LightView& light, int face, glm::ivec2 frame) {
   const float aspect = float(frame.x) / float(frame.y);

@@ -17,6 +17,23 @@ Texture makeTexture2D(GLenum internalFormat, int w, int h, GLenum filter, GLenum
   return Texture(id);
 }
 
+Sampler makePlainSampler() {
+  GLuint id = 0;
+  glCreateSamplers(1, &id);
+  glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  for (GLenum axis : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+    glSamplerParameteri(id, axis, GL_CLAMP_TO_EDGE);
+  return Sampler(id);
+}
+
+VertexArray makeEmptyVertexArray() {
+  GLuint id = 0;
+  glCreateVertexArrays(1, &id);
+  return VertexArray(id);
+}
+
 Buffer makeBuffer(size_t bytes, const void* data, GLbitfield flags) {
   GLuint id = 0;
   glCreateBuffers(1, &id);

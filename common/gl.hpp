@@ -63,6 +63,11 @@ using Sampler = GlObject<gldelete::sampler>;          ///< owns a sampler object
 
 /// Creates a 2D texture with storage (one level) and the given filter and wrap modes.
 Texture makeTexture2D(GLenum internalFormat, int w, int h, GLenum filter = GL_NEAREST, GLenum wrap = GL_CLAMP_TO_EDGE);
+/// Creates a sampler that reads texels as stored: nearest filtering, clamped to the edge, no depth
+/// comparison (for reading a depth map that may be set up for a shadow sampler).
+Sampler makePlainSampler();
+/// Creates an empty vertex array (for draws whose vertex shader makes its own vertices).
+VertexArray makeEmptyVertexArray();
 /// Creates a buffer with `bytes` of immutable storage, optionally filled from `data`.
 Buffer makeBuffer(size_t bytes, const void* data, GLbitfield flags = GL_DYNAMIC_STORAGE_BIT);
 /// Creates a framebuffer with the given color attachments and optional depth (or depth + stencil,

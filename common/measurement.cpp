@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "common/shadow_map.hpp"
+#include "common/strf.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -10,13 +11,6 @@
 
 namespace wb {
 namespace {
-
-template <typename... Args>
-std::string strf(const char* format, Args... args) {
-  char text[512];
-  std::snprintf(text, sizeof text, format, args...);
-  return text;
-}
 
 std::string footprint(const LightView& s) {
   return std::to_string(s.kernel) + "x" + std::to_string(s.kernel) + (s.kernel > 1 && s.gaussian ? " Gaussian" : "");

@@ -36,14 +36,8 @@ std::vector<float> PcfReference::render(GLuint positions, int width, int height,
   if (!program_) {
     program_ = std::make_unique<Program>(std::vector<ShaderStage>{{GL_VERTEX_SHADER, "wb/fullscreen.vert"},
                                                                   {GL_FRAGMENT_SHADER, "wb/pcf_reference.frag"}});
-    GLuint id = 0;
-    glCreateVertexArrays(1, &id);
-    vao_ = VertexArray(id);
-    glCreateSamplers(1, &id);
-    sampler_ = Sampler(id);
-    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    vao_ = makeEmptyVertexArray();
+    sampler_ = makePlainSampler();
   }
   GLint size[2] = {0, 0};
   if (target_.id()) {

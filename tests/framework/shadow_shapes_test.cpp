@@ -55,6 +55,19 @@ wb::Program depthProgram() {
   return wb::Program({{GL_VERTEX_SHADER, "wb/depth.vert"}, {GL_FRAGMENT_SHADER, "wb/depth.frag"}});
 }
 
+// Renders the six faces of `cube` (64 texels) from `faces`, one face at a time.
+void renderCube(const wb::Scene& scene, const std::vector<glm::mat4>& faces, wb::CubeShadowMap& cube) {
+  const wb::GpuScene gpu(scene);
+  const wb::Program depth = depthProgram();
+  depth.set("u_alphaCutoff", 0.5f);
+  cube.resize(64);
+  for (int face = 0; face < 6; ++face) {
+    cube.begin(face);
+    depth.set("u_lightViewProj", faces[size_t(face)]);
+    gpu.draw(depth);
+  }
+}
+
 }  // namespace
 
 // The cube's −Y face looks straight down at the plane, 2 away along its axis, so every texel holds
@@ -63,17 +76,9 @@ wb::Program depthProgram() {
 // ground 2 / ndc_y ahead; its bottom rows see the sky.
 TEST_F(GlTest, CubeShadowMapRendersEachFaceTheRightWayUp) {
   const wb::Scene scene = groundScene();
-  const wb::GpuScene gpu(scene);
-  const wb::Program depth = depthProgram();
-  wb::CubeShadowMap cube;
-  cube.resize(64);
   const auto faces = faceMatrices({0, 2, 0}, 0.5f, 10);
-  depth.set("u_alphaCutoff", 0.5f);
-  for (int face = 0; face < 6; ++face) {
-    cube.begin(face);
-    depth.set("u_lightViewProj", faces[size_t(face)]);
-    gpu.draw(depth);
-  }
+  wb::CubeShadowMap cube;
+  renderCube(scene, faces, cube);
   const float down = perspectiveDepth(2, 0.5f, 10);  // 0.78947
   for (int x : {0, 31, 63}) {
     EXPECT_NEAR(texel(cube.texture(), x, 17, 3), down, 1e-4) << "-Y face, column " << x;
@@ -93,16 +98,9 @@ TEST_F(GlTest, CubeShadowMapRendersEachFaceTheRightWayUp) {
 // ground below its middle and the sky above it.
 TEST_F(GlTest, CubeInsetShowsTheUnfoldedCross) {
   const wb::Scene scene = groundScene();
-  const wb::GpuScene gpu(scene);
-  const wb::Program depth = depthProgram();
-  wb::CubeShadowMap cube;
-  cube.resize(64);
   const auto faces = faceMatrices({0, 2, 0}, 0.5f, 10);
-  for (int face = 0; face < 6; ++face) {
-    cube.begin(face);
-    depth.set("u_lightViewProj", faces[size_t(face)]);
-    gpu.draw(depth);
-  }
+  wb::CubeShadowMap cube;
+  renderCube(scene, faces, cube);
   wb::FrameTarget target;
   target.resize({224, 224});
   target.clear();
