@@ -85,9 +85,64 @@ MeshData shapeMesh(const std::string& shape, const Fields& f) {
   f.fail("shape", "unknown shape '" + shape + "' (expected plane, box, sphere, cylinder, torus, bench or tree)");
 }
 
-}  // namespace
+// One entry of "objects": a primitive (or the tree composite) with its transform and material.
+void readObject(const json& entry, size_t i, const fs::path& file, const fs::path& dir, Scene& scene) {
+  Fields f(entry, "objects[" + std::to_string(i) + "]", file);
+  const std::string shape = f.str("shape", "");
+  if (shape.empty()) f.fail("shape", "missing (expected plane, box, sphere, cylinder, torus, bench or tree)");
+  glm::mat4 model = glm::translate(glm::mat4(1), f.vec3("position", glm::vec3(0)));
+  const glm::vec3 rot = f.vec3("rotation", glm::vec3(0));  // degrees, applied y, then x, then z
+  model = glm::rotate(model, glm::radians(rot.y), {0, 1, 0});
+  model = glm::rotate(model, glm::radians(rot.x), {1, 0, 0});
+  model = glm::rotate(model, glm::radians(rot.z), {0, 0, 1});
+  model = glm::scale(model, f.vec3("scale", glm::vec3(1)));
+  Material mat{f.vec3("color", glm::vec3(0.8f)), {}};
+  if (std::string tex = f.str("texture", ""); !tex.empty()) {
+    mat.texture = dir / tex;
+    if (!fs::exists(mat.texture)) f.fail("texture", "file '" + mat.texture.string() + "' not found");
+  }
+  const std::string name = f.str("name", "objects[" + std::to_string(i) + "]");
+  if (shape == "tree") {  // a composite: an opaque trunk and an alpha-tested canopy
+    const fs::path leaves = mat.texture.empty() ? dir / "textures/leaves.png" : mat.texture;
+    scene.objects.push_back({name + ".trunk", makeTreeTrunk(), model, {{0.45f, 0.3f, 0.18f}, {}}});
+    scene.objects.push_back({name + ".canopy", makeTreeCanopy(), model, {mat.color, leaves}});
+    return;
+  }
+  scene.objects.push_back({name, shapeMesh(shape, f), model, mat});
+}
 
-Scene Scene::load(const fs::path& file) {
+Light readLight(const json& entry, size_t i, const fs::path& file) {
+  static const std::map<std::string, LightType> kTypes = {
+      {"directional", LightType::Directional}, {"spot", LightType::Spot}, {"point", LightType::Point}};
+  Fields f(entry, "lights[" + std::to_string(i) + "]", file);
+  Light l;
+  const std::string type = f.str("type", "directional");
+  if (!kTypes.count(type)) f.fail("type", "unknown light type '" + type + "' (expected directional, spot or point)");
+  l.type = kTypes.at(type);
+  l.position = f.vec3("position", l.position);
+  l.direction = f.direction("direction", l.direction);
+  l.color = f.vec3("color", l.color);
+  l.angle = f.positive("angle", l.angle);
+  if (l.angle >= 89) f.fail("angle", "a spot cone half-angle must be below 89 degrees");
+  l.nearPlane = f.positive("near", l.nearPlane);
+  l.farPlane = f.positive("far", l.farPlane);
+  if (l.farPlane <= l.nearPlane) f.fail("far", "must be greater than near");
+  return l;
+}
+
+CameraBookmark readCamera(const json& entry, size_t i, const fs::path& file) {
+  Fields f(entry, "cameras[" + std::to_string(i) + "]", file);
+  CameraBookmark b;
+  b.name = f.str("name", "camera " + std::to_string(i + 1));
+  b.target = f.vec3("target", b.target);
+  b.distance = f.positive("distance", b.distance);
+  b.yaw = f.num("yaw", b.yaw);
+  b.pitch = f.num("pitch", b.pitch);
+  b.fov = f.positive("fov", b.fov);
+  return b;
+}
+
+json parseSceneFile(const fs::path& file) {
   std::ifstream in(file);
   if (!in)
     throw UsageError("scene file '" + file.string() + "' not found (scenes live in " +
@@ -99,67 +154,21 @@ Scene Scene::load(const fs::path& file) {
     throw UsageError(file.string() + ": not valid JSON: " + e.what());
   }
   if (!root.is_object()) throw UsageError(file.string() + ": the top level must be an object {...}");
+  return root;
+}
+
+}  // namespace
+
+Scene Scene::load(const fs::path& file) {
+  const json root = parseSceneFile(file);
   Scene scene;
   scene.path = fs::absolute(file);
-  const fs::path dir = scene.path.parent_path();
-
   const json& objects = arrayField(root, "objects", file, true);
-  for (size_t i = 0; i < objects.size(); ++i) {
-    Fields f(objects[i], "objects[" + std::to_string(i) + "]", file);
-    const std::string shape = f.str("shape", "");
-    if (shape.empty()) f.fail("shape", "missing (expected plane, box, sphere, cylinder, torus, bench or tree)");
-    glm::mat4 model = glm::translate(glm::mat4(1), f.vec3("position", glm::vec3(0)));
-    const glm::vec3 rot = f.vec3("rotation", glm::vec3(0));  // degrees, applied y, then x, then z
-    model = glm::rotate(model, glm::radians(rot.y), {0, 1, 0});
-    model = glm::rotate(model, glm::radians(rot.x), {1, 0, 0});
-    model = glm::rotate(model, glm::radians(rot.z), {0, 0, 1});
-    model = glm::scale(model, f.vec3("scale", glm::vec3(1)));
-    Material mat{f.vec3("color", glm::vec3(0.8f)), {}};
-    if (std::string tex = f.str("texture", ""); !tex.empty()) {
-      mat.texture = dir / tex;
-      if (!fs::exists(mat.texture)) f.fail("texture", "file '" + mat.texture.string() + "' not found");
-    }
-    const std::string name = f.str("name", "objects[" + std::to_string(i) + "]");
-    if (shape == "tree") {  // a composite: an opaque trunk and an alpha-tested canopy
-      const fs::path leaves = mat.texture.empty() ? dir / "textures/leaves.png" : mat.texture;
-      scene.objects.push_back({name + ".trunk", makeTreeTrunk(), model, {{0.45f, 0.3f, 0.18f}, {}}});
-      scene.objects.push_back({name + ".canopy", makeTreeCanopy(), model, {mat.color, leaves}});
-      continue;
-    }
-    scene.objects.push_back({name, shapeMesh(shape, f), model, mat});
-  }
-
+  for (size_t i = 0; i < objects.size(); ++i) readObject(objects[i], i, file, scene.path.parent_path(), scene);
   const json& lights = arrayField(root, "lights", file, true);
-  static const std::map<std::string, LightType> kTypes = {
-      {"directional", LightType::Directional}, {"spot", LightType::Spot}, {"point", LightType::Point}};
-  for (size_t i = 0; i < lights.size(); ++i) {
-    Fields f(lights[i], "lights[" + std::to_string(i) + "]", file);
-    Light l;
-    const std::string type = f.str("type", "directional");
-    if (!kTypes.count(type)) f.fail("type", "unknown light type '" + type + "' (expected directional, spot or point)");
-    l.type = kTypes.at(type);
-    l.position = f.vec3("position", l.position);
-    l.direction = f.direction("direction", l.direction);
-    l.color = f.vec3("color", l.color);
-    l.angle = f.positive("angle", l.angle);
-    if (l.angle >= 89) f.fail("angle", "a spot cone half-angle must be below 89 degrees");
-    l.nearPlane = f.positive("near", l.nearPlane);
-    l.farPlane = f.positive("far", l.farPlane);
-    if (l.farPlane <= l.nearPlane) f.fail("far", "must be greater than near");
-    scene.lights.push_back(l);
-  }
-
-  for (const json& c : arrayField(root, "cameras", file, false)) {
-    Fields f(c, "cameras[" + std::to_string(scene.cameras.size()) + "]", file);
-    CameraBookmark b;
-    b.name = f.str("name", "camera " + std::to_string(scene.cameras.size() + 1));
-    b.target = f.vec3("target", b.target);
-    b.distance = f.positive("distance", b.distance);
-    b.yaw = f.num("yaw", b.yaw);
-    b.pitch = f.num("pitch", b.pitch);
-    b.fov = f.positive("fov", b.fov);
-    scene.cameras.push_back(b);
-  }
+  for (size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(readLight(lights[i], i, file));
+  const json& cameras = arrayField(root, "cameras", file, false);
+  for (size_t i = 0; i < cameras.size(); ++i) scene.cameras.push_back(readCamera(cameras[i], i, file));
   if (scene.cameras.empty()) scene.cameras.emplace_back();
 
   scene.boundsMin = glm::vec3(1e30f);
