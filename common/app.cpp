@@ -64,6 +64,8 @@ int App::main(int argc, char** argv, std::unique_ptr<Lab> lab) {
   record.set("lab", lab->board().number());
   record.set("variant", variant::kName);
   Options options;
+  for (int a = 1; a + 1 < argc; ++a)  // a record even when the rest of the command line is bad
+    if (std::string(argv[a]) == "--record") options.record = argv[a + 1];
   auto fail = [&](int code, const char* status, const std::string& message) {
     std::fprintf(stderr, "%s: %s\n", exe.c_str(), message.c_str());
     record.set("status", status);
@@ -84,12 +86,19 @@ int App::main(int argc, char** argv, std::unique_ptr<Lab> lab) {
       return 0;
     }
     loadScene(*lab, options);
-    const std::string title = "Lab " + lab->board().number() + ": " + lab->board().title();
-    App app(options, title);
+    const std::string number = lab->board().number();
+    if (options.headless && options.screenshot.empty() && options.visibility.empty() && options.bench.empty() &&
+        !options.metrics && options.record.empty() && options.sweeps.empty())
+      options.screenshot = "lab" + number + ".png";  // a headless run asked for nothing: a picture
+    App app(options, "Lab " + number + ": " + lab->board().title());
     app.host(std::move(lab));
-    if (!options.sweeps.empty()) return app.sweep();
-    app.loop();
-    app.finish(record);
+    if (!options.sweeps.empty()) {
+      if (const int code = app.sweep(); code != 0) return code;
+      record.set("sweep", true);
+    } else {
+      app.loop();
+      app.finish(record);
+    }
     record.set("status", "ok");
     if (!options.record.empty() && !record.write(options.record))
       return fail(1, "error", "cannot write --record file '" + options.record + "'");
@@ -104,9 +113,6 @@ int App::main(int argc, char** argv, std::unique_ptr<Lab> lab) {
 }
 
 App::App(const Options& options, const std::string& title) : options_(options) {
-  if (options_.headless && options_.screenshot.empty() && options_.visibility.empty() && options_.bench.empty() &&
-      !options_.metrics && options_.record.empty())
-    options_.screenshot = title.substr(0, 3) == "Lab" ? "lab" + title.substr(4, 2) + ".png" : "lab.png";
   if (options_.frames < 0 && (options_.headless || !options_.bench.empty()))
     options_.frames = options_.bench.empty() ? 1 : 60;
   wall_.warmup = options_.bench.empty() ? 0 : std::min(10, options_.frames / 4);
@@ -128,7 +134,15 @@ void App::host(std::unique_ptr<Lab> lab) {
   lab_.reset();  // the previous lab's GL objects go while the context lives
   measurement_ = Measurement();
   heatmap_.reset();
+  lastMeasure_.reset();
+  sides_[0] = sides_[1] = LightView{};
+  timers_.collect(true, false);
+  timers_.clear();
+  wall_.sumMs = 0, wall_.frames = 0;
   shell_.measured.clear(), shell_.showHeatmap = false;
+  bool known = false;  // a comparison carries over only if the new lab has that setting
+  for (const auto& s : lab->settings.all()) known = known || s.name == shell_.compare.key;
+  if (!known) shell_.compare = CompareChoice{};
   lab->target_ = &target_, lab->timers_ = &timers_;
   target_.resize(frameSize_);
   lab->gpuScene = std::make_unique<GpuScene>(lab->scene);
@@ -244,10 +258,13 @@ void App::presentWindow() {
   glViewport(0, 0, size.x, size.y);
   Lab& lab = *lab_;
   const int bookmark = lab.bookmark_;
-  drawShell({lab.board_, timers_, lab.programs_, lab.warnings_, lab.settings, size, [&] { lab.ui(); }}, shell_);
-  if (lab.bookmark_ != bookmark && lab.bookmark_ < int(lab.scene.cameras.size()))
-    lab.camera.pose = lab.scene.cameras[size_t(lab.bookmark_)];
-  lab.lightIndex = std::min(lab.lightIndex, int(lab.scene.lights.size()) - 1);
+  auto labUi = [&] {  // the shared settings are applied before the lab's own widgets read them
+    if (lab.bookmark_ != bookmark && lab.bookmark_ < int(lab.scene.cameras.size()))
+      lab.camera.pose = lab.scene.cameras[size_t(lab.bookmark_)];
+    lab.lightIndex = std::min(lab.lightIndex, int(lab.scene.lights.size()) - 1);
+    lab.ui();
+  };
+  drawShell({lab.board_, timers_, lab.programs_, lab.warnings_, lab.settings, size, labUi}, shell_);
   if (shell_.measureRequested) shell_.measureRequested = false, measureNow(true);
   ImGui::Render();
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

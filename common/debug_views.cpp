@@ -40,6 +40,7 @@ void DebugViews::draw(const DebugOptions& options, const LightView& light, const
                       const FrameTarget& target, GLuint heatmap) const {
   target.bind();
   target.maskDataOutputs(true);  // overlays change what people see, never what is measured
+  for (GLenum state : {GL_STENCIL_TEST, GL_SCISSOR_TEST, GL_CULL_FACE}) glDisable(state);  // whatever the lab left on
   glBindVertexArray(vao_.id());
   if (options.showFrustum && light.hasMap()) drawFrusta(light, viewer);
   if (options.showMap && light.hasMap()) drawInset(light, target.size());
@@ -64,11 +65,14 @@ void DebugViews::drawFrusta(const LightView& light, const glm::mat4& viewer) con
 void DebugViews::drawInset(const LightView& light, glm::ivec2 frame) const {
   // Bottom left: the Settings window covers the right side.
   glDisable(GL_DEPTH_TEST);
+  GLint labSampler = 0;  // the lab may keep its own sampler on unit 0
+  glActiveTexture(GL_TEXTURE0);
+  glGetIntegerv(GL_SAMPLER_BINDING, &labSampler);
   glBindSampler(0, plain_.id());
   glBindTextureUnit(0, light.texture);
   const bool perspective = light.light.type != LightType::Directional;
   if (light.target == GL_TEXTURE_CUBE_MAP) {
-    const int cell = std::max(8, frame.y / 7);
+    const int cell = std::max(8, std::min(frame.y / 7, (frame.x / 2 - 8) / 4));
     glViewport(8, 8, 4 * cell, 3 * cell);
     cube_.use();
     cube_.set("u_linear", light.linearDistance ? 1 : 0);
@@ -90,7 +94,7 @@ void DebugViews::drawInset(const LightView& light, glm::ivec2 frame) const {
       glDrawArrays(GL_TRIANGLES, 0, 3);
     }
   }
-  glBindSampler(0, 0);
+  glBindSampler(0, GLuint(labSampler));
   glEnable(GL_DEPTH_TEST);
 }
 

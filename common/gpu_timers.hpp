@@ -47,6 +47,8 @@ class GpuTimers {
   void collect(bool wait, bool record);
   /// Forgets the statistics (the pass names stay, in their order).
   void resetStats();
+  /// Forgets the passes too (a new lab has its own); collect(true, …) first.
+  void clear() { passes_.clear(); }
   /// Every pass seen so far, in first-seen order.
   const std::vector<std::pair<std::string, PassStats>>& passes() const { return passes_; }
 

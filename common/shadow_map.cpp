@@ -4,6 +4,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace wb {
@@ -89,7 +90,8 @@ void CubeShadowMap::beginLayered() const { bindAndClear(layeredFbo_, size_); }
 LightView CubeShadowMap::describe(const Light& light, const std::vector<glm::mat4>& faceViewProj,
                                   bool linearDistance) const {
   LightView v;
-  v.light = light, v.viewProj = faceViewProj, v.target = GL_TEXTURE_CUBE_MAP, v.texture = texture(), v.size = size_;
+  v.light = light, v.target = GL_TEXTURE_CUBE_MAP, v.texture = texture(), v.size = size_;
+  v.viewProj.assign(faceViewProj.begin(), faceViewProj.begin() + std::min<long>(6, long(faceViewProj.size())));
   v.linearDistance = linearDistance;
   return v;
 }
@@ -114,7 +116,8 @@ void ShadowMapArray::beginLayered() const { bindAndClear(layeredFbo_, size_); }
 
 LightView ShadowMapArray::describe(const Light& light, const std::vector<glm::mat4>& layerViewProj) const {
   LightView v;
-  v.light = light, v.viewProj = layerViewProj, v.target = GL_TEXTURE_2D_ARRAY, v.texture = texture(), v.size = size_;
+  v.light = light, v.target = GL_TEXTURE_2D_ARRAY, v.texture = texture(), v.size = size_;
+  v.viewProj.assign(layerViewProj.begin(), layerViewProj.begin() + std::min<long>(layers_, long(layerViewProj.size())));
   return v;
 }
 

@@ -49,7 +49,7 @@ class CubeShadowMap {
   GLuint texture() const { return texture_.id(); }
   /// Width and height of one face in texels.
   int size() const { return size_; }
-  /// This map with its six face matrices; `linearDistance` when it stores |p − light| / far.
+  /// This map with its face matrices (the first six); `linearDistance` when it stores |p − light| / far.
   LightView describe(const Light& light, const std::vector<glm::mat4>& faceViewProj, bool linearDistance) const;
 
  private:
@@ -74,7 +74,7 @@ class ShadowMapArray {
   int size() const { return size_; }
   /// The number of layers.
   int layers() const { return layers_; }
-  /// This array with one matrix per layer.
+  /// This array with one matrix per layer (extra matrices are dropped).
   LightView describe(const Light& light, const std::vector<glm::mat4>& layerViewProj) const;
 
  private:

@@ -1,10 +1,11 @@
 #version 450 core
 // A cube shadow map unfolded as a cross, in the viewport the debug views give it (4 x 3 cells):
 //          +Y
-//     -X   +Z   +X   -Z
+//     +X   +Z   -X   -Z
 //          -Y
-// Each cell turns its position into a lookup direction with GL's cube-map rules (face, s, t), so a
-// seam that lines up here lines up in the map. Shown as linear distance: stored directly when the
+// Each cell shows what the light sees looking along that axis with +Y up (so the cross is not
+// mirrored against the scene), and every seam between neighbouring cells lines up. The lookup
+// direction follows GL's cube-map rules (face, s, t), so a seam that lines up here lines up in the map. Shown as linear distance: stored directly when the
 // lab writes |p - light| / far, otherwise a face's window depth made linear again.
 in vec2 v_uv;
 uniform samplerCube u_map;
@@ -27,10 +28,10 @@ void main() {
   vec2 cell = floor(v_uv * vec2(4.0, 3.0));
   vec2 local = fract(v_uv * vec2(4.0, 3.0)) * 2.0 - 1.0;
   int face = -1;
-  if (cell.y == 1.0) face = int[4](1, 4, 0, 5)[int(cell.x)];
+  if (cell.y == 1.0) face = int[4](0, 4, 1, 5)[int(cell.x)];
   else if (cell.x == 1.0) face = cell.y == 2.0 ? 2 : 3;
   if (face < 0) discard;  // the corners of the cross show the scene
-  vec3 dir = faceDirection(face, local.x, -local.y);
+  vec3 dir = faceDirection(face, -local.x, -local.y);  // s grows to the left as seen from the light
   float d = texture(u_map, dir).r;
   if (u_linear == 0) {
     float zNdc = d * 2.0 - 1.0;

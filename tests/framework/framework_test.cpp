@@ -231,6 +231,9 @@ TEST(RunRecord, AFailedRunRecordsWhy) {
   const wb::RunResult run = wb::readRunRecord(record);
   EXPECT_EQ(run.status, "usage_error");
   EXPECT_NE(run.error.find("nope"), std::string::npos) << run.error;
+  const fs::path early = scratch("cli") / "unknown_option.json";  // the parser itself failed
+  EXPECT_EQ(runLab("--record " + early.string() + " --bogus").code, 2);
+  EXPECT_NE(wb::readRunRecord(early).error.find("--bogus"), std::string::npos);
 }
 
 // Exact visibility against geometry worked out by hand: a unit box [-0.5,0.5] x [0,1] x [-0.5,0.5]

@@ -94,26 +94,28 @@ TEST_F(GlTest, CubeShadowMapRendersEachFaceTheRightWayUp) {
 }
 
 // The unfolded cross reads the cube through samplerCube (the lookup lab 08 uses): the −Y cell shows
-// the linear depth (2 − 0.5) / 9.5 = 0.158 (40 of 255), the +Y cell white, and the +X cell the
-// ground below its middle and the sky above it.
+// the linear depth (2 − 0.5) / 9.5 = 0.158 (40 of 255), the +Y cell white, and the +X cell (left of
+// +Z, as seen from the light) the ground below its middle and the sky above it.
 TEST_F(GlTest, CubeInsetShowsTheUnfoldedCross) {
   const wb::Scene scene = groundScene();
   const auto faces = faceMatrices({0, 2, 0}, 0.5f, 10);
   wb::CubeShadowMap cube;
   renderCube(scene, faces, cube);
   wb::FrameTarget target;
-  target.resize({224, 224});
+  target.resize({448, 224});
   target.clear();
   wb::DebugOptions show;
   show.showMap = true;
   wb::DebugViews().draw(show, cube.describe(scene.lights[0], faces, false), glm::mat4(1), target, 0);
   const auto px = target.readColor();
-  auto red = [&](int x, int y) { return int(px[(size_t(y) * 224 + size_t(x)) * 4]); };
-  // Cells are 224 / 7 = 32 pixels, from (8, 8): cell (i, j) is centred at (8 + 32 i + 16, 8 + 32 j + 16).
+  wb::writePng(fs::path(wb::variant::kOutputDir) / "shapes" / "cube_cross.png", 448, 224, px);  // to look at
+  auto red = [&](int x, int y) { return int(px[(size_t(y) * 448 + size_t(x)) * 4]); };
+  // Cells are 224 / 7 = 32 pixels (the cross fits the left half of 448), from (8, 8): cell (i, j) is centred at (8 + 32
+  // i + 16, 8 + 32 j + 16).
   EXPECT_NEAR(red(56, 24), 40, 2) << "-Y cell";
   EXPECT_EQ(red(56, 88), 255) << "+Y cell";
-  EXPECT_LT(red(88, 44), 128) << "+X cell, lower part: the ground";
-  EXPECT_EQ(red(88, 68), 255) << "+X cell, upper part: the sky";
+  EXPECT_LT(red(24, 44), 128) << "+X cell (left of +Z), lower part: the ground";
+  EXPECT_EQ(red(24, 68), 255) << "+X cell, upper part: the sky";
 }
 
 // Two layers looking straight down through orthographic boxes with near 0 and far 4, from 1 and

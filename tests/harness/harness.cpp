@@ -106,7 +106,7 @@ static ::testing::AssertionResult runIsolated(const std::string& id, const fs::p
   }
   const fs::path log = out / "lab.log", record = out / "run.json";
   fs::remove(record);
-  // From its output folder: a headless run without --screenshot writes labNN.png where it runs.
+  // From its output folder, so nothing it writes lands where the tests were started.
   std::string cmd = "cd " + quote(out.string()) + " && " + env + "timeout 120 " + quote(exe) + " --headless --record " +
                     quote(record.string());
   for (const auto& a : args) cmd += " " + quote(a);
