@@ -14,16 +14,18 @@ namespace {
 const int kMapSizes[] = {512, 1024, 2048, 4096, 8192};
 }  // namespace
 
-Lab::Lab(std::string defaultScene)
+Lab::Lab(std::string defaultScene, ShadowKind kind)
     : defaultScene_(std::move(defaultScene)), board_(fs::path(variant::kLabDir) / "exercises.json") {
   // The settings every lab shares; a lab registers the rest (and shadow.bias, if it uses one).
-  std::vector<std::string> sizes;
-  for (int s : kMapSizes) sizes.push_back(std::to_string(s));
-  settings.addChoice("shadow.map_size", mapSizeChoice_, sizes,
-                     "shadow map resolution in texels (clamped to GL_MAX_TEXTURE_SIZE)");
+  if (kind == ShadowKind::Map) {
+    std::vector<std::string> sizes;
+    for (int s : kMapSizes) sizes.push_back(std::to_string(s));
+    settings.addChoice("shadow.map_size", mapSizeChoice_, sizes,
+                       "shadow map resolution in texels (clamped to GL_MAX_TEXTURE_SIZE)");
+  }
   settings.add("alpha.cutoff", alphaCutoff_, 0.0f, 1.0f, "leaf texels with lower alpha are holes and cast no shadow");
   settings.add("light.index", lightIndex, 0, 7, "which light of the scene casts shadows");
-  debug_.addTo(settings);
+  if (kind == ShadowKind::Map) debug_.addTo(settings);
   settings.add("camera.bookmark", bookmark_, 0, 8, "camera bookmark from the scene file (keys 1-9)");
 }
 

@@ -29,12 +29,19 @@ namespace wb {
 
 class App;
 
+/// How a lab makes its shadows, so that it gets only the shared settings that mean something there.
+enum class ShadowKind {
+  Map,      ///< from a shadow map: shadow.map_size and the map's debug views (debug.*)
+  Geometry  ///< from geometry (stencil shadow volumes): no map, so neither of those
+};
+
 /// Base class of every lab. Override the hooks; use the protected helpers.
 class Lab {
  public:
   /// @param defaultScene scene file relative to the repository root. The lab's number, title and
   /// exercise list come from its exercises.json, the one list shared with the tests and grading.
-  explicit Lab(std::string defaultScene);
+  /// @param kind how the lab makes its shadows (which shared settings it gets).
+  explicit Lab(std::string defaultScene, ShadowKind kind = ShadowKind::Map);
   virtual ~Lab();
   Lab(const Lab&) = delete;
   Lab& operator=(const Lab&) = delete;

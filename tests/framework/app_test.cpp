@@ -56,6 +56,29 @@ int hostTwoLabs() {
 
 }  // namespace
 
+// A lab whose shadows come from geometry gets no shadow-map settings; one with a map gets them.
+TEST(App, SharedSettingsOnlyWhereTheyMeanSomething) {
+  struct VolumeLab : wb::Lab {
+    VolumeLab() : Lab("scenes/depth_map.json", wb::ShadowKind::Geometry) {}
+    void init() override {}
+    void render() override {}
+  } volumes;
+  auto names = [](wb::Lab& lab) {
+    std::string all;
+    for (const auto& s : lab.tunables().all()) all += s.name + " ";
+    return all;
+  };
+  EXPECT_EQ(names(volumes).find("shadow.map_size"), std::string::npos) << names(volumes);
+  EXPECT_EQ(names(volumes).find("debug."), std::string::npos) << names(volumes);
+  EXPECT_EQ(names(volumes).find("shadow.bias"), std::string::npos) << names(volumes);
+  EXPECT_NE(names(volumes).find("light.index"), std::string::npos) << names(volumes);
+  SolidLab mapped(glm::vec4(1));
+  EXPECT_NE(names(mapped).find("shadow.map_size"), std::string::npos) << names(mapped);
+  EXPECT_NE(names(mapped).find("debug.shadow_map"), std::string::npos) << names(mapped);
+  EXPECT_EQ(names(mapped).find("shadow.bias"), std::string::npos) << "registered only by useDepthBias()";
+  EXPECT_EQ(names(mapped).find("debug.light_face"), std::string::npos) << "registered only by useLightFaces()";
+}
+
 // Run in a fresh process (gtest's threadsafe death-test style re-runs this binary), so the app's
 // context is the only one there.
 TEST(App, HostsOneLabAfterAnotherInOneContext) {
