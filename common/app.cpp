@@ -296,8 +296,10 @@ MeasureResult App::measureNow(bool report) {
   const Light& sceneLight = lab.lightShown_ ? lab.light_.light : lab.scene.lights[size_t(lab.lightIndex)];
   CompareChoice split = shell_.compare;
   split.on = split.on && !split.key.empty();
-  const MeasureResult r =
-      measurement_.measure({target_, lab.scene, lab.alphaCutoff_, lab.light_, sceneLight, split, sides_});
+  std::optional<FloatImage> given;  // --measure-visibility: a buffer drawn elsewhere, measured here
+  if (!options_.measureVisibility.empty()) given = readPfm(options_.measureVisibility);
+  const MeasureResult r = measurement_.measure(
+      {target_, lab.scene, lab.alphaCutoff_, lab.light_, sceneLight, split, sides_, given ? &*given : nullptr});
   shell_.measured = r.text;
   lastMeasure_ = r;
   if (!report) return r;

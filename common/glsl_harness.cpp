@@ -4,6 +4,8 @@
 #include "common/shader.hpp"
 #include "common/variant.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -66,15 +68,57 @@ std::string takeExerciseChunk(const std::string& base, const std::string& donor,
          "#line " + std::to_string(lineAt(base, b1)) + "\n" + base.substr(b1);
 }
 
+namespace {
+
+// True when the lab's manifest puts exercise `id` in shaders/`file`.
+bool isGlslExercise(const std::string& file, const std::string& id) {
+  try {
+    const auto manifest = nlohmann::json::parse(readFile(fs::path(variant::kLabDir) / "exercises.json"));
+    for (const auto& e : manifest.at("exercises"))
+      if (e.at("id").get<std::string>() == id) return e.at("file").get<std::string>() == "shaders/" + file;
+  } catch (const std::exception&) {
+  }
+  return false;
+}
+
+// `mine` with every exercise chunk except `keep`'s that the solution also has swapped for the
+// solution's; the preamble (helpers above the first marker) stays the student's. #line keeps the
+// compiler's messages on the student's line numbers.
+std::string keepOnlyChunk(const std::string& mine, const std::string& solution, const std::string& keep) {
+  auto lineAt = [](const std::string& t, size_t pos) { return 1 + std::count(t.begin(), t.begin() + long(pos), '\n'); };
+  std::vector<size_t> starts;  // the first character of every marker's line
+  for (size_t p = mine.find("// EXERCISE "); p != std::string::npos; p = mine.find("// EXERCISE ", p + 12))
+    starts.push_back(p == 0 ? 0 : mine.rfind('\n', p) + 1);
+  std::string out = mine.substr(0, starts.empty() ? mine.size() : starts[0]);
+  for (size_t k = 0; k < starts.size(); ++k) {
+    const size_t begin = starts[k], end = k + 1 < starts.size() ? starts[k + 1] : mine.size();
+    const size_t marker = mine.find("// EXERCISE ", begin) + 12;
+    const std::string id = mine.substr(marker, mine.find_first_of(" \t\r\n:", marker) - marker);
+    if (id == keep || solution.find("// EXERCISE " + id) == std::string::npos) {
+      out += mine.substr(begin, end - begin);
+      continue;
+    }
+    const auto [s0, s1] = chunk(solution, id);
+    out += "#line " + std::to_string(lineAt(solution, s0)) + "\n" + solution.substr(s0, s1 - s0);
+    if (!out.empty() && out.back() != '\n') out += "\n";
+    out += "#line " + std::to_string(lineAt(mine, end)) + "\n";
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string isolatedExerciseSource(const std::string& file, const std::string& id) {
   const std::string mine = readFile(findShaderFile(file, shaderSearchPath()));
   const fs::path solution = fs::path(variant::kSolutionDir) / "shaders" / file;
   if (*variant::kSolutionDir == '\0' || !fs::exists(solution)) return mine;
-  // Start from the solution and put in only this exercise's chunk: a syntax error elsewhere in the
-  // student's file then costs only the exercise it is in. For a C++ exercise (no chunk here) the
-  // GLSL is all solution, so a GLSL stub never blocks it.
-  if (mine.find("// EXERCISE " + id) == std::string::npos) return readFile(solution);
-  return takeExerciseChunk(readFile(solution), mine, id);
+  // A C++ exercise has no chunk here: its GLSL is all solution, so a GLSL stub never blocks it.
+  if (!isGlslExercise(file, id)) return readFile(solution);
+  // Fail closed: without this exercise's marker the student's whole file is what is graded.
+  if (mine.find("// EXERCISE " + id) == std::string::npos) return mine;
+  // The student's whole file (helpers outside the markers included), with the solution's chunks
+  // for the other exercises: a mistake elsewhere then costs only the exercise it is in.
+  return keepOnlyChunk(mine, readFile(solution), id);
 }
 
 const char* glslSamplerName(SamplerType type) {

@@ -18,9 +18,11 @@ namespace wb {
 /// `base` with the same chunk from `donor`. Throws wb::Error if either text lacks the marker.
 std::string takeExerciseChunk(const std::string& base, const std::string& donor, const std::string& id);
 
-/// The exercise GLSL this build would run for exercise `id`: this variant's file, with every other
-/// exercise taken from the solution when the solution exists (so one mistake is counted once); all
-/// solution when `id` has no chunk in the file (a C++ exercise).
+/// The exercise GLSL this build would run for exercise `id`: this variant's whole file (helpers
+/// above the first marker included), with every other exercise's chunk taken from the solution when
+/// the solution exists (so one mistake is counted once). The whole file as it is when its marker
+/// for `id` is missing (fail closed: never the solution's code for the exercise graded); all
+/// solution when `id` is a C++ exercise (so a GLSL stub never blocks it).
 /// `file` is the name on the shader search path, e.g. "exercise.glsl".
 std::string isolatedExerciseSource(const std::string& file, const std::string& id);
 

@@ -5,6 +5,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <regex>
@@ -24,9 +25,17 @@ std::vector<fs::path> splitPath(const std::string& s) {
 }
 
 // Appends `text` (source number `index`) to `out`, expanding includes depth-first.
-void expand(const std::string& text, const fs::path& origin, const std::string& defines,
+// Files saved on Windows: a UTF-8 byte-order mark and CRLF line ends, which GLSL compilers reject.
+std::string withoutBomAndCr(const std::string& text) {
+  std::string s = text.rfind("\xEF\xBB\xBF", 0) == 0 ? text.substr(3) : text;
+  s.erase(std::remove(s.begin(), s.end(), '\r'), s.end());
+  return s;
+}
+
+void expand(const std::string& rawText, const fs::path& origin, const std::string& defines,
             const std::vector<fs::path>& path, ShaderSource& src, std::ostringstream& out, int depth) {
   if (depth > 16) throw Error(origin.string() + ": #include nested too deeply (a cycle?)");
+  const std::string text = withoutBomAndCr(rawText);
   const int index = static_cast<int>(src.files.size());
   src.files.push_back(origin);
   static const std::regex includeRe(R"(^\s*#\s*include\s+\"([^\"]+)\")");

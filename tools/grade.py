@@ -24,6 +24,7 @@ import os
 import re
 import shutil
 import signal
+import stat
 import subprocess
 import sys
 import tarfile
@@ -37,6 +38,8 @@ from xml.sax.saxutils import escape, quoteattr
 
 ROOT = Path(__file__).resolve().parent.parent
 NOBODY = 65534
+SANDBOX_UID = 61000  # grading tree k runs student code as uid 61000 + k (when the grader is root)
+MAX_TAPE_BYTES = 64 << 20  # what a judge reads of a runner's tape at most
 MAX_FILE_BYTES = 1 << 20  # a larger "exercise file" is not source code
 
 
@@ -105,33 +108,54 @@ def find_student_file(folder, lab, rel):
     return matches[0] if len(matches) == 1 else None
 
 
+def regular_inside(path, folder):
+    """True when `path` is a regular file reached from `folder` without following any link."""
+    try:
+        rel = path.relative_to(folder)
+    except ValueError:
+        return False
+    current = folder
+    for part in rel.parts:
+        current = current / part
+        if stat.S_ISLNK(os.lstat(current).st_mode):
+            return False
+    return stat.S_ISREG(os.lstat(path).st_mode)
+
+
 # --- The sandbox ----------------------------------------------------------------------------------
 class Sandbox:
-    """Runs a command in its own process group with a time limit, without network (a new network
-    namespace) and, when the grader is root, as the unprivileged user nobody."""
+    """Runs a command in its own session with a time limit, without network (a new network
+    namespace), in a new PID namespace (every process it starts, daemons included, is killed when it
+    ends) and, when the grader is root, as an unprivileged user of its own (one per grading tree,
+    so two students graded at once cannot touch each other's files)."""
 
     def __init__(self):
         self.prefix, self.notes = [], []
-        root = os.geteuid() == 0
-        if root and shutil.which("setpriv"):
+        self.root = os.geteuid() == 0
+        if self.root and shutil.which("setpriv"):
             self.prefix = ["setpriv", f"--reuid={NOBODY}", f"--regid={NOBODY}", "--clear-groups", "--"]
-        elif root:
+        elif self.root:
             self.notes.append("setpriv is missing: tests run as root")
-        net = ["unshare", "--net", "--"] if root else ["unshare", "--net", "--map-current-user", "--"]
-        if shutil.which("unshare") and subprocess.run(net + ["true"], capture_output=True).returncode == 0:
-            self.prefix = net + self.prefix
+        ns = ["unshare", "--net", "--pid", "--fork", "--kill-child", "--mount-proc"]
+        ns += ["--"] if self.root else ["--map-current-user", "--"]
+        if shutil.which("unshare") and subprocess.run(ns + ["true"], capture_output=True).returncode == 0:
+            self.prefix = ns + self.prefix
         else:
-            self.notes.append("network namespaces are not available here: tests run with the network")
-        if root and "setpriv" in self.prefix and subprocess.run(
+            self.notes.append("network and PID namespaces are not available here (unshare failed): tests run "
+                              "with the network, and a process a submission leaves behind is killed by session "
+                              "only")
+        if self.root and "setpriv" in self.prefix and subprocess.run(
                 self.prefix + ["test", "-r", str(ROOT / "CMakeLists.txt")], capture_output=True).returncode != 0:
             self.prefix = self.prefix[:self.prefix.index("setpriv")]
             self.notes.append(f"the user nobody cannot read {ROOT}: tests run as root (make the path "
                               "world-readable to drop privileges)")
-        self.user = "nobody" if "setpriv" in self.prefix else "the grader's user"
+        self.user = f"a user of their own (uid {SANDBOX_UID} and up)" if "setpriv" in self.prefix else "the grader's user"
 
-    def run(self, cmd, timeout, cwd=None, env=None):
-        """(exit code or -signal, output, timed_out)."""
-        return run_killable(self.prefix + cmd, timeout, cwd=cwd, env=env)
+    def run(self, cmd, timeout, cwd=None, env=None, uid=NOBODY):
+        """(exit code or -signal, output, timed_out), as `uid` when the sandbox drops privileges."""
+        prefix = [f"--reuid={uid}" if a.startswith("--reuid=") else f"--regid={uid}" if a.startswith("--regid=")
+                  else a for a in self.prefix]
+        return run_killable(prefix + cmd, timeout, cwd=cwd, env=env)
 
 
 def run_killable(cmd, timeout, cwd=None, env=None):
@@ -171,6 +195,7 @@ class Workspace:
     """One prebuilt grading tree: build-grade/wK with the submission's files in build-grade/wK/submission."""
 
     def __init__(self, index, labs, base):
+        self.uid = SANDBOX_UID + index  # this tree's runners' user (when the grader is root)
         self.dir = base / f"w{index}"
         self.submission = self.dir / "submission"
         self.build = self.dir / "build"
@@ -211,24 +236,61 @@ class Workspace:
         targets = []
         for lab in self.labs:
             nn = lab["nn"]
-            targets += [f"lab{nn}_solution", f"lab{nn}_submission", f"lab{nn}_submission_tests"]
+            targets += [f"lab{nn}_solution", f"lab{nn}_solution_tests", f"lab{nn}_submission", f"lab{nn}_submission_tests"]
         run_checked(["cmake", "--build", str(self.build), "-j", str(jobs), "--target"] + targets,
                     "build the grading framework")
         self.make_readable()
         return time.time() - t0
 
     def make_readable(self):
-        """The sandboxed tests run as nobody: they read the build and write test-output/ (what they
-        create there is theirs; older files may be the grader's)."""
+        """The runners run as this tree's own user: they read the build and write test-output/ and
+        their tapes, which no other tree's user can enter (0700)."""
         for p in (self.dir.parent, self.dir, self.build):
             os.chmod(p, 0o755)
-        out = self.build / "test-output"
-        out.mkdir(exist_ok=True)
-        for p in [out] + list(out.rglob("*")):
-            try:
-                os.chmod(p, 0o777 if p.is_dir() else 0o666)
-            except OSError:
-                pass
+        for name in ("test-output", "tapes"):
+            own(self.build / name, self.uid)
+
+    def fresh_tape(self, tag):
+        """An empty folder for one runner's tape, its user's alone."""
+        tape = self.build / "tapes" / tag
+        shutil.rmtree(tape, ignore_errors=True)
+        own(tape, self.uid)
+        return tape
+
+
+def own(folder, uid):
+    """Creates `folder` (if needed) and gives it, and what is in it, to `uid` alone (when root)."""
+    folder.mkdir(parents=True, exist_ok=True)
+    if os.geteuid() != 0:
+        return
+    for p in [folder] + list(folder.rglob("*")):
+        try:
+            os.lchown(p, uid, uid)
+        except OSError:
+            pass
+    os.chmod(folder, 0o700)
+
+
+def copy_tape(src, dest):
+    """Copies a runner's tape for the judge: regular files only (no links, devices or folders), up to
+    MAX_TAPE_BYTES in all; what does not fit is left out, so the judge finds no result there."""
+    shutil.rmtree(dest.parent, ignore_errors=True)
+    dest.mkdir(parents=True)
+    os.chmod(dest.parent, 0o700)
+    total = 0
+    for entry in sorted(os.scandir(src), key=lambda e: e.name) if src.is_dir() else []:
+        if not entry.is_file(follow_symlinks=False):
+            continue
+        size = entry.stat(follow_symlinks=False).st_size
+        if total + size > MAX_TAPE_BYTES:
+            continue
+        total += size
+        try:
+            fd = os.open(entry.path, os.O_RDONLY | os.O_NOFOLLOW)
+        except OSError:
+            continue
+        with os.fdopen(fd, "rb") as f_in, open(dest / entry.name, "wb") as f_out:
+            f_out.write(f_in.read(size))
 
 
 def run_checked(cmd, what):
@@ -249,14 +311,24 @@ def chunk(text, ex_id):
     return begin, end
 
 
-def with_chunk(base, donor, ex_id):
-    """`base` with the chunk of `ex_id` taken from `donor` (None if either lacks the marker)."""
-    b, d = chunk(base, ex_id), chunk(donor, ex_id)
-    if not b or not d:
-        return None
-    line = donor.count("\n", 0, d[0]) + 1
-    after = base.count("\n", 0, b[1]) + 1
-    return base[:b[0]] + f"#line {line}\n" + donor[d[0]:d[1]] + f"#line {after}\n" + base[b[1]:]
+def keep_only_chunks(mine, solution, keep):
+    """The student's whole file (helpers above the first marker included) with every exercise chunk
+    whose id is not in `keep` swapped for the solution's (as common/glsl_harness.cpp does for GLSL);
+    #line keeps compiler messages on the student's line numbers."""
+    starts = [0 if p == 0 else mine.rfind("\n", 0, p) + 1 for p in
+              (m.start() for m in re.finditer(r"// EXERCISE ", mine))]
+    out = mine[:starts[0] if starts else len(mine)]
+    for k, begin in enumerate(starts):
+        end = starts[k + 1] if k + 1 < len(starts) else len(mine)
+        ex_id = re.match(r"[^\s:]+", mine[mine.index("// EXERCISE ", begin) + 12:])
+        ex_id = ex_id.group(0) if ex_id else ""
+        theirs = chunk(solution, ex_id) if ex_id and ex_id not in keep else None
+        if not theirs:
+            out += mine[begin:end]
+            continue
+        out += f"#line {solution.count(chr(10), 0, theirs[0]) + 1}\n" + solution[theirs[0]:theirs[1]]
+        out += ("" if out.endswith("\n") else "\n") + f"#line {mine.count(chr(10), 0, end) + 1}\n"
+    return out
 
 
 def compiler_errors(output, limit=12):
@@ -317,19 +389,17 @@ class Grader:
             return {i: build_failure(out) for i in cpp_ids} or {e["id"]: build_failure(out) for e in lab["exercises"]}
         base = solution.read_text()
         for ex_id in cpp_ids:
-            hybrid = with_chunk(base, mine, ex_id)
-            if hybrid is None:
+            if chunk(mine, ex_id) is None:
                 failed[ex_id] = f"the file has no '// EXERCISE {ex_id}' marker any more; keep the markers"
                 continue
+            hybrid = keep_only_chunks(mine, base, {ex_id})
             self.ws.place(lab["name"], "exercise.cpp", hybrid.encode())
             ok, out1 = self.build_lab(lab)
             if ok:
                 good[ex_id] = True
             else:
                 failed[ex_id] = build_failure(out1)
-        combined = base
-        for ex_id in good:
-            combined = with_chunk(combined, mine, ex_id)
+        combined = keep_only_chunks(mine, base, set(good))
         self.ws.place(lab["name"], "exercise.cpp", combined.encode())
         ok, out2 = self.build_lab(lab)
         if not ok:  # the parts compile alone but not together: nothing C++ can be graded
@@ -344,7 +414,10 @@ class Grader:
         exe = self.ws.build / f"lab{lab['nn']}_submission_tests"
         if not exe.exists():  # the lab could not be built at all (every exercise is then marked broken)
             return []
-        code, out, _ = self.sandbox.run([str(exe), "--gtest_list_tests"], 60, cwd=self.ws.build / "test-output")
+        # The list comes from the judge (the same test sources, built with the solution): a submission
+        # cannot hide a test by printing another list.
+        judge = self.ws.build / f"lab{lab['nn']}_solution_tests"
+        code, out, _ = run_killable([str(judge), "--gtest_list_tests"], 60, cwd=self.ws.dir)
         tests, suite = [], ""
         for line in out.splitlines():
             if line and not line.startswith(" "):
@@ -354,25 +427,36 @@ class Grader:
         return tests
 
     def run_tests(self, lab, gfilter, tag):
-        """Runs one exercise's tests in the sandbox: (passed, failures [(test, message)], note)."""
-        exe = self.ws.build / f"lab{lab['nn']}_submission_tests"
-        report = self.ws.build / "test-output" / f"{tag}.json"
-        if report.exists():
-            report.unlink()
+        """Grades one exercise's tests: (passed, failures [(test, message)], runner output). The
+        submission's test binary runs as the *runner* in the sandbox and records the values its
+        exercises produce on a tape; the solution's test binary, the *judge*, replays that tape and
+        decides. The runner's exit code, output and files claim nothing (see tests/harness/tape.hpp)."""
+        runner = self.ws.build / f"lab{lab['nn']}_submission_tests"
+        judge = self.ws.build / f"lab{lab['nn']}_solution_tests"
+        tape = self.ws.fresh_tape(tag)
         env = dict(os.environ, HOME="/tmp", WB_STRICT_GL="1")
         code, out, timed_out = self.sandbox.run(
-            [str(exe), f"--gtest_filter={gfilter}", f"--gtest_output=json:{report}"], self.timeout, env=env,
-            cwd=report.parent)
+            [str(runner), f"--gtest_filter={gfilter}", "--runner", str(tape)], self.timeout, env=env, cwd=tape,
+            uid=self.ws.uid)
         running = re.findall(r"\[ RUN      \] (\S+)", out)
+        stopped = []  # why the runner ended early, shown before what the judge found
         if timed_out:
-            return False, [(running[-1] if running else "", f"ERROR: timed out after {self.timeout} s (an endless "
-                            "loop in C++ or in a shader?); the process was killed")], out
-        if code < 0 or not report.exists():
-            sig = -code if code < 0 else code - 128 if code > 128 else 0
+            stopped = [(running[-1] if running else "", f"ERROR: timed out after {self.timeout} s (an endless "
+                        "loop in C++ or in a shader?); the process was killed")]
+        elif code < 0 or code > 128:
+            sig = -code if code < 0 else code - 128
             name = signal.Signals(sig).name if sig in signal.Signals._value2member_map_ else f"exit {code}"
             tail = "\n".join(out.strip().splitlines()[-8:])
-            return False, [(running[-1] if running else "", f"ERROR: the tests crashed ({name}) in "
-                            f"{running[-1] if running else 'start-up'}:\n{tail}")], out
+            stopped = [(running[-1] if running else "", f"ERROR: the tests crashed ({name}) in "
+                        f"{running[-1] if running else 'start-up'}:\n{tail}")]
+        judged = self.ws.dir / "judge" / tag
+        copy_tape(tape, judged / "tape")
+        report = judged / "report.json"
+        jcode, jout, jtimed = run_killable([str(judge), f"--gtest_filter={gfilter}", "--judge", str(judged / "tape"),
+                                            f"--gtest_output=json:{report}"], self.timeout, env=env, cwd=judged)
+        if jtimed or not report.exists():
+            return False, stopped + [("", "ERROR: the judge could not finish (a fault of the grader, not of the "
+                                      f"submission: tell the instructor):\n{jout[-2000:]}")], out
         data = json.loads(report.read_text())
         failures, count = [], 0
         for suite in data.get("testsuites", []):
@@ -381,7 +465,8 @@ class Grader:
                 for f in t.get("failures", []):
                     failures.append((f"{suite['name']}.{t['name']}", f["failure"]))
         if count == 0:
-            return False, [("", "ERROR: no tests ran")], out
+            return False, stopped + [("", "ERROR: no tests ran")], out
+        failures = stopped + failures
         return not failures, failures, out
 
     def grade_exercise(self, lab, e, tests, broken):
@@ -405,7 +490,8 @@ class Grader:
     def grade_alone(self, lab, e, mine, tests):
         """Grades C++ exercise `e` with the solution's exercise.cpp and only its own chunk from `mine`."""
         solution = ROOT / "solutions" / lab["name"] / "exercise.cpp"
-        hybrid = with_chunk(solution.read_text(), mine, e["id"]) if solution.exists() else None
+        hybrid = keep_only_chunks(mine, solution.read_text(), {e["id"]}) \
+            if solution.exists() and chunk(mine, e["id"]) else None
         if hybrid is None:
             return None
         self.ws.place(lab["name"], "exercise.cpp", hybrid.encode())
@@ -452,6 +538,9 @@ class Grader:
                     found = find_student_file(folder, lab["name"], rel)
                     if found is None:
                         notes.append(f"labs/{lab['name']}/{rel} is not in the submission: the stub is graded")
+                    elif not regular_inside(found, folder):
+                        notes.append(f"labs/{lab['name']}/{rel} is a link or not a regular file: it is not "
+                                     "followed, and the stub is graded (submit the file itself)")
                     elif found.stat().st_size > MAX_FILE_BYTES:
                         notes.append(f"labs/{lab['name']}/{rel} is over 1 MiB: the stub is graded")
                     else:

@@ -14,6 +14,20 @@
                        build of every lab, of its lab, of that exercise alone) and loses that exercise
   archive.zip          full, zipped inside a top folder (as students upload it), missing one file
 
+The red team (cheats score zero; honest oddities score full marks):
+  forged_report        the stubs, plus C++ that forges every "passed" a runner could claim: a gtest
+                       JSON report at exit, "PASSED" on stdout, exit code 0, files in its folder
+  daemon               full, plus a process forked at start-up that never ends: it must not
+                       outlive grading
+  flood                full, plus 100 MB printed by one exercise
+  empty_glsl           full, with an empty exercise.glsl: its exercises are lost, never graded
+                       as the solution
+  markers_removed      full, with the GLSL markers renamed: the whole file is graded (full marks)
+  helpers_outside      full, with a GLSL helper above the first marker that an exercise calls
+  crlf_bom             full, with Windows line ends and a UTF-8 byte-order mark in both files
+  symlink              full, with exercise.cpp a link to the solution's: not followed, the stub is
+                       graded
+
 DIR/expected.json gives the score each should get and the exercises it should lose, computed from
 labs/*/exercises.json: the grader is held against it by tests/grading.
 """
@@ -54,12 +68,113 @@ def edit(dest, lab, rel, ex_id, transform):
     path.write_text(text[:brace] + transform + text[brace:])
 
 
+def prepend(dest, lab, rel, text):
+    """Puts `text` at the top of the file, above every marker (where a student's helpers go)."""
+    path = dest / "labs" / lab / rel
+    path.write_text(text + path.read_text())
+
+
 def insert_after_marker(dest, lab, rel, ex_id, text):
     """Inserts `text` on the line after exercise `ex_id`'s marker (in its chunk, before its code)."""
     path = dest / "labs" / lab / rel
     content = path.read_text()
     at = content.index("\n", content.index(f"// EXERCISE {ex_id}")) + 1
     path.write_text(content[:at] + text + content[at:])
+
+
+FORGER = r"""
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+namespace {
+// Claims a pass every way a runner could: a gtest report wherever --gtest_output points, PASSED
+// on stdout, files a grader might read, and exit code 0 whatever happened.
+void forgeEverything() {
+  std::ifstream cmdline("/proc/self/cmdline");
+  std::string arg;
+  while (std::getline(cmdline, arg, '\0')) {
+    if (arg.rfind("--gtest_output=json:", 0) == 0)
+      std::ofstream(arg.substr(20)) << "{\"tests\": 1, \"failures\": 0, \"testsuites\": [{\"name\": \"Lab\", "
+                                       "\"testsuite\": [{\"name\": \"Ex_Forged\"}]}]}";  // one test, passed
+  }
+  for (const char* f : {"report.json", "results.json", "PASSED"}) std::ofstream(f) << "{\"score\": 100}";
+  std::printf("[  PASSED  ] 999 tests.\n");
+  std::fflush(stdout);
+  _exit(0);
+}
+const int forged = std::atexit(forgeEverything);
+}  // namespace
+"""
+
+DAEMON = r"""
+#include <unistd.h>
+namespace {
+// A process that outlives its parent: grading must end it.
+const int daemonStarted = [] {
+  if (fork() == 0) {
+    setsid();
+    for (;;) sleep(1);
+  }
+  return 0;
+}();
+}  // namespace
+"""
+
+FLOOD = r"""
+#include <cstdio>
+#include <string>
+#include <errno.h>
+namespace {
+// 100 MB on stdout from the test binary (the runner), once.
+const int flooded = [] {
+  if (std::string(program_invocation_short_name).find("_tests") == std::string::npos) return 0;
+  const std::string line(1023, 'x');
+  for (int i = 0; i < 100 * 1024; ++i) std::printf("%s\n", line.c_str());
+  return 0;
+}();
+}  // namespace
+"""
+
+
+def red_team(out, full, expect, cpp, glsl, points, the_labs):
+    """The cheats and the honest oddities (see the module's doc)."""
+    lab, e_cpp = cpp
+    glsl_lab, e_glsl = glsl
+    lab_ex = dict(the_labs)[glsl_lab]
+    glsl_ids = [e["id"] for e in lab_ex if e["file"] == e_glsl["file"]]
+    cpp_ids = [e["id"] for e in dict(the_labs)[lab] if e["file"] == e_cpp["file"]]
+    write_tree(out / "forged_report", lambda name: ROOT / "labs" / name, the_labs)
+    prepend(out / "forged_report", lab, e_cpp["file"], FORGER)
+    expect("forged_report", list(points))
+    for name, code in (("daemon", DAEMON), ("flood", FLOOD)):
+        prepend(full(name), lab, e_cpp["file"], code)
+        expect(name, [])
+    d = full("empty_glsl")
+    (d / "labs" / glsl_lab / e_glsl["file"]).write_text("")
+    expect("empty_glsl", glsl_ids)
+    d = full("markers_removed")
+    path = d / "labs" / glsl_lab / e_glsl["file"]
+    path.write_text(path.read_text().replace("// EXERCISE ", "// exercise "))
+    expect("markers_removed", [])
+    d = full("helpers_outside")
+    path = d / "labs" / glsl_lab / e_glsl["file"]
+    text = path.read_text()
+    first = text.rfind("\n", 0, text.index("// EXERCISE ")) + 1
+    path.write_text(text[:first] + "float studentHelperHalf(float x) { return 0.5 * x; }\n\n" + text[first:])
+    edit(d, glsl_lab, e_glsl["file"], glsl_ids[-1], "  float helped = studentHelperHalf(2.0);\n")
+    expect("helpers_outside", [])
+    d = full("crlf_bom")
+    for rel in (e_cpp["file"], e_glsl["file"]):
+        path = d / "labs" / lab / rel
+        path.write_bytes(b"\xef\xbb\xbf" + path.read_bytes().replace(b"\n", b"\r\n"))
+    expect("crlf_bom", [])
+    d = full("symlink")
+    target = d / "labs" / lab / e_cpp["file"]
+    target.unlink()
+    target.symlink_to(ROOT / "solutions" / lab / e_cpp["file"])
+    expect("symlink", cpp_ids)
 
 
 def main():
@@ -179,6 +294,9 @@ static_assert(CompileTimeSteps<800>::value == 800, "800 steps");
             z.write(p, Path("my-workbook") / p.relative_to(src))
     shutil.rmtree(src)
     expect("archive", [e["id"] for e in first_ex if e["file"] == missing])
+
+    if cpp and glsl:
+        red_team(out, full, expect, cpp, glsl, points, the_labs)
 
     (out / "expected.json").write_text(json.dumps(expected, indent=2) + "\n")
     print(f"wrote {len(expected)} submissions to {out} (expected scores in expected.json)")

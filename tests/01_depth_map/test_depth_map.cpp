@@ -36,7 +36,7 @@ TEST(Lab01, Ex01_1_DirectionalFitContainsAndHugsTheBounds) {
   for (const auto& d : kDirections)
     for (const auto& box : kBoxes) {
       glm::mat4 m;
-      WB_TRY_EXERCISE(m = lab01::directionalLightViewProj(d, box.lo, box.hi));
+      WB_TRY_EXERCISE(m = WB_CALL(lab01::directionalLightViewProj(d, box.lo, box.hi)));
       glm::dvec3 lo(1e9), hi(-1e9);
       for (int i = 0; i < 8; ++i) {
         const glm::dvec3 p = project(m, box.corner(i));
@@ -59,7 +59,7 @@ TEST(Lab01, Ex01_1_DirectionalFitContainsAndHugsTheBounds) {
 TEST(Lab01, Ex01_1_DirectionalIsOrthographicAlongTheLight) {
   for (const auto& d : kDirections) {
     glm::mat4 m;
-    WB_TRY_EXERCISE(m = lab01::directionalLightViewProj(d, kBoxes[0].lo, kBoxes[0].hi));
+    WB_TRY_EXERCISE(m = WB_CALL(lab01::directionalLightViewProj(d, kBoxes[0].lo, kBoxes[0].hi)));
     const glm::vec4 w = glm::transpose(m)[3];
     ASSERT_NEAR(glm::length(glm::vec4(w.x, w.y, w.z, w.w - 1)), 0, 1e-5)
         << "WRONG: the last row is not (0,0,0,1): not orthographic";
@@ -79,7 +79,7 @@ TEST(Lab01, Ex01_2_SpotFrustumMatchesTheCone) {
   const glm::vec3 pos(4, 6.5f, 5), dir = glm::normalize(glm::vec3(-0.5f, -1, -0.75f));
   const float half = 40, n = 1, f = 20;
   glm::mat4 m;
-  WB_TRY_EXERCISE(m = lab01::spotLightViewProj(pos, dir, half, n, f));
+  WB_TRY_EXERCISE(m = WB_CALL(lab01::spotLightViewProj(pos, dir, half, n, f)));
   glm::dvec3 a = project(m, pos + dir * n), b = project(m, pos + dir * f);
   ASSERT_NEAR(glm::length(glm::dvec2(a)), 0, 1e-4) << "WRONG: the light's axis does not land at the map centre";
   ASSERT_NEAR(a.z, -1, 1e-4) << "WRONG: the near plane must map to NDC z = -1";

@@ -49,13 +49,21 @@ TEST_F(GlTest, Ex02_2_SlopeScaledBiasGrowsWithTheAngleAndIsClamped) {
 
 // --- 02.3: rasterizer bias -------------------------------------------------------------------------
 TEST_F(GlTest, Ex02_3_RasterizerBiasSetsPolygonOffset) {
-  WB_TRY_EXERCISE(lab02::applyRasterizerBias(2.5f, 16.0f));
-  GLfloat factor = 0, units = 0;
-  glGetFloatv(GL_POLYGON_OFFSET_FACTOR, &factor);
-  glGetFloatv(GL_POLYGON_OFFSET_UNITS, &units);
-  const bool enabled = glIsEnabled(GL_POLYGON_OFFSET_FILL);
-  glDisable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(0, 0);
+  // The state the call leaves is what the runner records: (enabled, factor, units).
+  auto stateAfter = [] {
+    lab02::applyRasterizerBias(2.5f, 16.0f);
+    GLfloat factor = 0, units = 0;
+    glGetFloatv(GL_POLYGON_OFFSET_FACTOR, &factor);
+    glGetFloatv(GL_POLYGON_OFFSET_UNITS, &units);
+    const bool on = glIsEnabled(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(0, 0);
+    return glm::vec4(on ? 1 : 0, factor, units, 0);
+  };
+  glm::vec4 state{0};
+  WB_TRY_EXERCISE(state = WB_CALL(stateAfter()));
+  const bool enabled = state.x != 0;
+  const float factor = state.y, units = state.z;
   EXPECT_TRUE(enabled) << "WRONG: GL_POLYGON_OFFSET_FILL is not enabled";
   EXPECT_EQ(factor, 2.5f) << "WRONG: the factor (slope term) should be 2.5";
   EXPECT_EQ(units, 16.0f) << "WRONG: the units (constant term) should be 16";
@@ -78,7 +86,7 @@ TEST(Lab02, Ex02_3_D3DDepthBiasRule) {
   };
   for (const auto& c : cases) {
     double got = 0;
-    WB_TRY_EXERCISE(got = lab02::d3dDepthBias(c.depthBias, c.slope, c.clamp, c.maxSlope, c.maxZ));
+    WB_TRY_EXERCISE(got = WB_CALL(lab02::d3dDepthBias(c.depthBias, c.slope, c.clamp, c.maxSlope, c.maxZ)));
     EXPECT_NEAR(got, c.want, 1e-12) << "WRONG: DepthBias " << c.depthBias << ", SlopeScaledDepthBias " << c.slope
                                     << ", clamp " << c.clamp << ", max slope " << c.maxSlope << ", max z " << c.maxZ;
   }
@@ -86,14 +94,21 @@ TEST(Lab02, Ex02_3_D3DDepthBiasRule) {
 
 // --- 02.4: front-face culling ----------------------------------------------------------------------
 TEST_F(GlTest, Ex02_4_CullForDepthPassCullsTheLitFaces) {
-  WB_TRY_EXERCISE(lab02::cullForDepthPass(true));
-  GLint mode = 0;
-  glGetIntegerv(GL_CULL_FACE_MODE, &mode);
-  const bool on = glIsEnabled(GL_CULL_FACE);
-  WB_TRY_EXERCISE(lab02::cullForDepthPass(false));
-  const bool off = !glIsEnabled(GL_CULL_FACE);
-  glDisable(GL_CULL_FACE);
-  glCullFace(GL_BACK);
+  // The state each call leaves is what the runner records: (culling on, cull mode).
+  auto stateAfter = [](bool cull) {
+    lab02::cullForDepthPass(cull);
+    GLint mode = 0;
+    glGetIntegerv(GL_CULL_FACE_MODE, &mode);
+    const bool on = glIsEnabled(GL_CULL_FACE);
+    glDisable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    return glm::vec2(on ? 1 : 0, float(mode));
+  };
+  glm::vec2 first{0}, second{1, 0};
+  WB_TRY_EXERCISE(first = WB_CALL(stateAfter(true)));
+  WB_TRY_EXERCISE(second = WB_CALL(stateAfter(false)));
+  const bool on = first.x != 0, off = second.x == 0;
+  const GLint mode = GLint(first.y);
   EXPECT_TRUE(on) << "WRONG: culling is not enabled";
   EXPECT_EQ(mode, GL_FRONT) << "WRONG: the depth pass must cull the faces turned to the light (GL_FRONT)";
   EXPECT_TRUE(off) << "WRONG: cullForDepthPass(false) must turn culling off";

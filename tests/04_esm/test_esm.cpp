@@ -57,8 +57,8 @@ TEST_F(GlTest, Ex04_3_VisibilityIsClampedExp) {
 // exp(c) = max  =>  c = ln(max): ln(FLT_MAX) = 88.7228..., ln(65504) = 11.0898...
 TEST(Lab04, Ex04_4_ExponentBounds) {
   double fp32 = 0, fp16 = 0;
-  WB_TRY_EXERCISE(fp32 = lab04::esmMaxExponent(double(FLT_MAX)));
-  WB_TRY_EXERCISE(fp16 = lab04::esmMaxExponent(65504.0));
+  WB_TRY_EXERCISE(fp32 = WB_CALL(lab04::esmMaxExponent(double(FLT_MAX))));
+  WB_TRY_EXERCISE(fp16 = WB_CALL(lab04::esmMaxExponent(65504.0)));
   EXPECT_NEAR(fp32, 88.7228, 1e-3) << "WRONG: the fp32 bound is ln(FLT_MAX) = 88.72";
   EXPECT_NEAR(fp16, 11.0898, 1e-3) << "WRONG: the fp16 bound is ln(65504) = 11.09";
 }

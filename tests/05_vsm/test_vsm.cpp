@@ -61,7 +61,7 @@ TEST(Lab05, Ex05_4_ThreePlaneFormula) {
   const std::pair<double, double> cases[] = {{0, 0}, {0.5, 1.0 / 26}, {1, 0.1}, {2, 0.2}, {1e6, 0.5}};
   for (auto [t, want] : cases) {
     double got = -1;
-    WB_TRY_EXERCISE(got = lab05::threePlaneBleeding(t));
+    WB_TRY_EXERCISE(got = WB_CALL(lab05::threePlaneBleeding(t)));
     EXPECT_NEAR(got, want, 1e-5) << "WRONG: threePlaneBleeding(" << t << ")";
   }
 }

@@ -38,8 +38,8 @@ TEST_F(GlTest, Ex06_1_WarpsAndTheirSquares) {
 // exp(c)^2 = max  =>  c = ln(max) / 2: 44.36 for fp32, 5.545 for fp16.
 TEST(Lab06, Ex06_2_ExponentClamps) {
   double fp32 = 0, fp16 = 0;
-  WB_TRY_EXERCISE(fp32 = lab06::evsmMaxExponent(double(FLT_MAX)));
-  WB_TRY_EXERCISE(fp16 = lab06::evsmMaxExponent(65504.0));
+  WB_TRY_EXERCISE(fp32 = WB_CALL(lab06::evsmMaxExponent(double(FLT_MAX))));
+  WB_TRY_EXERCISE(fp16 = WB_CALL(lab06::evsmMaxExponent(65504.0)));
   EXPECT_NEAR(fp32, 44.3614, 1e-3) << "WRONG: the fp32 clamp is ln(FLT_MAX) / 2";
   EXPECT_NEAR(fp16, 5.5449, 1e-3) << "WRONG: the fp16 clamp is ln(65504) / 2";
 }

@@ -3,6 +3,7 @@
 get: usage check_batch.py SUBMISSIONS_DIR GRADES_DIR. Exit 0 when every check passes."""
 import csv
 import json
+import os
 import sys
 from pathlib import Path
 
@@ -20,7 +21,9 @@ def check(cond, what):
 reasons = {"compile_error": "does not compile", "segfault": "SIGSEGV", "endless_loop_cpp": "timed out",
            "endless_loop_glsl": ("timed out", "WRONG"),  # llvmpipe ends any shader loop after 65535 turns
            "one_wrong": "WRONG", "stubs": "NOT IMPLEMENTED", "archive": "not in the submission",
-           "endless_build": "the build timed out after"}
+           "endless_build": "the build timed out after", "forged_report": "NOT IMPLEMENTED",
+           "symlink": "is a link", "empty_glsl": "ERROR"}
+root = Path(__file__).resolve().parent.parent.parent
 
 rows = {r["student"]: r for r in csv.DictReader(open(grades / "gradebook.csv"))}
 check(sorted(rows) == sorted(expected), f"the gradebook lists {sorted(rows)}, expected every submission: "
@@ -61,6 +64,32 @@ for name, want in expected.items():
         check(float(row["total"]) == res["score"], f"{name}: gradebook total {row['total']} != {res['score']}")
 
 check((grades / "summary.md").exists(), "no summary.md")
+
+# Nothing leaked: no line of a solution file in any student's results, and no result file swollen
+# by a submission's output.
+solution_lines = {l.strip() for f in (root / "solutions").rglob("*") if f.is_file()
+                  for l in f.read_text(errors="replace").splitlines()
+                  if len(l.strip()) > 30 and not l.strip().startswith("//")}
+for name in expected:
+    results_file = grades / name / "results.json"
+    if not results_file.exists():
+        continue
+    text = results_file.read_text(errors="replace")
+    check(len(text) < 1 << 20, f"{name}: results.json is {len(text)} bytes")
+    leaked = [l for l in solution_lines if l in text]
+    check(not leaked, f"{name}: results.json shows solution code: {leaked[:2]}")
+
+# Every process a grading run started has ended (the sandbox's users are 61000 and up).
+if os.geteuid() == 0:
+    left = []
+    for status in Path("/proc").glob("[0-9]*/status"):
+        try:
+            uid = int(next(l for l in status.read_text().splitlines() if l.startswith("Uid:")).split()[1])
+        except (OSError, StopIteration, ValueError):
+            continue
+        if 61000 <= uid < 61100:
+            left.append(f"pid {status.parent.name} (uid {uid})")
+    check(not left, f"processes of the sandbox's users outlived grading: {left}")
 for p in problems:
     print("FAIL:", p)
 print(f"{len(expected)} submissions checked: " + ("all as expected" if not problems else f"{len(problems)} problems"))

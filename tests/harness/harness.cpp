@@ -5,6 +5,7 @@
 #include "common/run_record.hpp"
 #include "common/shader.hpp"
 #include "common/variant.hpp"
+#include "tests/harness/tape.hpp"
 
 #include <sys/wait.h>
 
@@ -82,19 +83,19 @@ std::string renderer() { return g_renderer; }
 
 std::vector<glm::vec4> runExercise(const std::string& id, const std::string& body, int count, int stride,
                                    const std::vector<glm::vec4>& inputs, const std::vector<unsigned>& textures) {
-  const fs::path file = findShaderFile("exercise.glsl", shaderSearchPath());
-  return runGlslKernel(isolatedExerciseSource("exercise.glsl", id), file, body, count, stride, inputs,
-                       std::vector<GLuint>(textures.begin(), textures.end()));
+  return observe<std::vector<glm::vec4>>([&] {
+    const fs::path file = findShaderFile("exercise.glsl", shaderSearchPath());
+    return runGlslKernel(isolatedExerciseSource("exercise.glsl", id), file, body, count, stride, inputs,
+                         std::vector<GLuint>(textures.begin(), textures.end()));
+  });
 }
 
 // Runs the lab headless for exercise `id` with GLSL isolation (the exercise's own chunk from this
 // build, everything else from the solution: a GLSL exercise then runs in the solution's app, so C++
 // stubs cannot block it, and a C++ exercise runs in this build's app with the solution's GLSL).
-// The run's JSON record (--record) says how it went; its human-readable text is only shown.
-// Returns the log, or fails the test with ERROR / NOT IMPLEMENTED.
-static ::testing::AssertionResult runIsolated(const std::string& id, const fs::path& out,
-                                              const std::vector<std::string>& args, std::string& logText,
-                                              RunResult* result = nullptr) {
+// Returns {"code": exit code, "log": output, "command": the command}.
+static nlohmann::json runLabProcess(const std::string& id, const fs::path& out, const std::vector<std::string>& args,
+                                    const std::vector<std::string>& extra) {
   fs::create_directories(out);
   std::string env = "WB_STRICT_GL=1 ";
   std::string exe = variant::kLabExe;
@@ -104,15 +105,38 @@ static ::testing::AssertionResult runIsolated(const std::string& id, const fs::p
     std::ofstream(out / "exercise.glsl") << isolatedExerciseSource("exercise.glsl", id);
     env += "WB_SHADER_OVERLAY=" + quote(out.string()) + " ";
   }
-  const fs::path log = out / "lab.log", record = out / "run.json";
-  fs::remove(record);
+  const fs::path log = out / "lab.log";
   // From its output folder, so nothing it writes lands where the tests were started.
-  std::string cmd = "cd " + quote(out.string()) + " && " + env + "timeout 120 " + quote(exe) + " --headless --record " +
-                    quote(record.string());
+  std::string cmd = "cd " + quote(out.string()) + " && " + env + "timeout 120 " + quote(exe) + " --headless";
   for (const auto& a : args) cmd += " " + quote(a);
+  for (const auto& a : extra) cmd += " " + quote(a);
   const int status = std::system((cmd + " >" + quote(log.string()) + " 2>&1").c_str());
-  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128;
-  logText = readFile(log);
+  // The log is the student's process's output: only its start and end are kept (and recorded).
+  std::string text = readFile(log);
+  if (text.size() > 40000) text = text.substr(0, 20000) + "\n[...]\n" + text.substr(text.size() - 20000);
+  return {{"code", WIFEXITED(status) ? WEXITSTATUS(status) : 128}, {"log", text}, {"command", cmd}};
+}
+
+// Runs the lab for exercise `id` (see runLabProcess) as an observation: a runner records its exit
+// code, output, record (run.json) and visibility (result.pfm, when `args` ask for it); a judge gets
+// them back from the tape. Fails with ERROR / NOT IMPLEMENTED when it did not run.
+static ::testing::AssertionResult runIsolated(const std::string& id, const fs::path& out,
+                                              const std::vector<std::string>& args, std::string& logText,
+                                              RunResult* result = nullptr) {
+  const fs::path record = out / "run.json";
+  fs::create_directories(out);
+  fs::remove(record);
+  const std::string key = nextObservationKey();
+  nlohmann::json run;
+  try {
+    run = observeJson(key, [&] { return runLabProcess(id, out, args, {"--record", record.string()}); });
+    observeFile(key + ".record", record);
+    observeFile(key + ".visibility", out / "result.pfm");
+  } catch (const std::exception& e) {
+    return ::testing::AssertionFailure() << "ERROR: " << e.what();
+  }
+  const int code = run.value("code", 128);
+  logText = run.value("log", std::string());
   if (code != 0) {
     // The first line names the cause (a compile error's file:line when there is one).
     std::string cause, last;
@@ -124,19 +148,41 @@ static ::testing::AssertionResult runIsolated(const std::string& id, const fs::p
     return ::testing::AssertionFailure() << "ERROR: the lab "
                                          << (code == 124 ? "timed out" : "failed (exit " + std::to_string(code) + ")")
                                          << ": " << (cause.empty() ? last : cause) << "\n"
-                                         << logText << "command: " << cmd;
+                                         << logText << "command: " << run.value("command", std::string());
   }
-  RunResult run;
+  RunResult recorded;
   try {
-    run = readRunRecord(record);
+    recorded = readRunRecord(record);
   } catch (const std::exception& e) {
     return ::testing::AssertionFailure() << "ERROR: the lab wrote no usable record: " << e.what() << "\n" << logText;
   }
   // The app probes every exercise; a stub whose effect cannot be seen in pixels (an alpha test
   // that keeps everything) is still reported as not implemented.
-  if (run.exerciseStates[id] == "not_implemented")
-    return ::testing::AssertionFailure() << "NOT IMPLEMENTED: exercise " << id << ": " << run.exerciseMessages[id];
-  if (result) *result = run;
+  if (recorded.exerciseStates[id] == "not_implemented")
+    return ::testing::AssertionFailure() << "NOT IMPLEMENTED: exercise " << id << ": " << recorded.exerciseMessages[id];
+  if (result) *result = recorded;
+  return ::testing::AssertionSuccess();
+}
+
+// A judge measures the runner's visibility itself: the solution's app (trusted code; this build's
+// app in the student edition) renders the same scene for the positions and measures the recorded
+// visibility buffer against exact visibility (--measure-visibility), so no number comes from the
+// student's process.
+static ::testing::AssertionResult judgeMeasurement(const fs::path& out, const std::vector<std::string>& args,
+                                                   RunResult& run) {
+  const fs::path record = out / "judge.json", log = out / "judge.log";
+  const std::string exe = variant::kSolutionExe[0] ? variant::kSolutionExe : variant::kLabExe;
+  std::string cmd = "cd " + quote(out.string()) + " && timeout 120 " + quote(exe) + " --headless --record " +
+                    quote(record.string()) + " --measure-visibility " + quote((out / "result.pfm").string());
+  for (const auto& a : args) cmd += " " + quote(a);
+  const int status = std::system((cmd + " >" + quote(log.string()) + " 2>&1").c_str());
+  try {
+    run = readRunRecord(record);
+  } catch (const std::exception& e) {
+    return ::testing::AssertionFailure() << "ERROR: the measurement of the recorded visibility failed: " << e.what();
+  }
+  if (status != 0 || run.status != "ok")
+    return ::testing::AssertionFailure() << "ERROR: the recorded visibility could not be measured: " << run.error;
   return ::testing::AssertionSuccess();
 }
 
@@ -149,12 +195,14 @@ std::string runLabOutput(const std::string& id, const std::string& name, const s
 }
 
 SceneMetrics measureScene(const std::string& id, const std::string& name, const std::vector<std::string>& args) {
-  std::vector<std::string> all = {"--size", "480x270", "--metrics"};
+  const fs::path out = fs::path(variant::kOutputDir) / ("Ex" + id + "_" + name);
+  std::vector<std::string> all = {"--size", "480x270", "--metrics", "--dump-visibility", (out / "result.pfm").string()};
   all.insert(all.end(), args.begin(), args.end());
   std::string log;
   SceneMetrics m;
   RunResult run;
-  const auto ok = runIsolated(id, fs::path(variant::kOutputDir) / ("Ex" + id + "_" + name), all, log, &run);
+  auto ok = runIsolated(id, out, all, log, &run);
+  if (ok && tapeMode() == TapeMode::Replay) ok = judgeMeasurement(out, all, run);
   if (!ok) {
     m.failure = ok.message();
     return m;

@@ -4,6 +4,7 @@
 #pragma once
 #include "common/error.hpp"
 #include "common/image.hpp"
+#include "tests/harness/tape.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>

@@ -4,6 +4,10 @@
 //   --expect-stubs   like --check, but succeed only if every exercise is NOT IMPLEMENTED (CI runs
 //                    this on the student build to prove the stubs are stubs)
 //   --update-golden  regenerate tests/golden/<lab>/ from this build (solution builds only)
+//   --runner DIR     record every value the exercises produce on a tape in DIR; decide nothing
+//   --judge DIR      replay the tape in DIR instead of running any exercise, and decide
+//                    (see tape.hpp: the grader runs the student's build as the runner and the
+//                    solution's as the judge; `./workbook check` runs both the same way)
 #include "common/variant.hpp"
 #include "tests/harness/harness.hpp"
 
@@ -67,7 +71,11 @@ class CheckListener : public ::testing::EmptyTestEventListener {
   }
   void OnTestProgramEnd(const ::testing::UnitTest&) override {
     const auto manifest = readManifest();
-    std::printf("\nLab %s: %s build\n", wb::variant::kLab, wb::variant::kName);
+    if (wb::test::tapeMode() == wb::test::TapeMode::Replay)
+      std::printf("\nLab %s: judged from what your build produced (%s)\n", wb::variant::kLab,
+                  wb::test::tapeDir().string().c_str());
+    else
+      std::printf("\nLab %s: %s build\n", wb::variant::kLab, wb::variant::kName);
     std::printf("  %-5s %-46s %-16s %s\n", "ID", "exercise", "status", "diagnosis");
     int done = 0;
     for (const auto& e : manifest) {
@@ -131,14 +139,19 @@ int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   bool check = false, expectStubs = false;
   for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--check"))
+    const bool runner = !std::strcmp(argv[i], "--runner"), judge = !std::strcmp(argv[i], "--judge");
+    if ((runner || judge) && i + 1 < argc)
+      wb::test::openTape(runner ? wb::test::TapeMode::Record : wb::test::TapeMode::Replay, argv[++i]);
+    else if (!std::strcmp(argv[i], "--check"))
       check = true;
     else if (!std::strcmp(argv[i], "--expect-stubs"))
       check = expectStubs = true;
     else if (!std::strcmp(argv[i], "--update-golden"))
       wb::test::g_updateGolden = true;
     else {
-      std::fprintf(stderr, "%s: unknown option '%s' (accepted: --check, --expect-stubs, --update-golden, --gtest_*)\n",
+      std::fprintf(stderr,
+                   "%s: unknown option '%s' (accepted: --check, --expect-stubs, --update-golden, --runner DIR, "
+                   "--judge DIR, --gtest_*)\n",
                    argv[0], argv[i]);
       return 2;
     }
