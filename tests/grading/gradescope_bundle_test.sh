@@ -3,8 +3,8 @@
 # the zip holds the tracked files only (run twice, with an earlier zip, an untracked zip, a
 # __pycache__ and a build folder lying around, none of them goes in), laid out as Gradescope unpacks
 # it (setup.sh and run_autograder beside the workbook, executable); --labs 03 (or 03,04) makes an
-# assignment for those labs, and its run_autograder passes them to the grader; outside a git
-# checkout it refuses. Usage: gradescope_bundle_test.sh SCRATCH_DIR
+# assignment for those labs, and its run_autograder passes them to the grader; its setup.sh stops
+# with "setup.sh: FAILED" and the reason; outside a git checkout it refuses. Usage: gradescope_bundle_test.sh SCRATCH_DIR
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 tmp=${1:?usage: gradescope_bundle_test.sh SCRATCH_DIR}
@@ -60,6 +60,23 @@ WB_AUTOGRADER="$tmp/ag" "$tmp/ag/source/run_autograder" >"$tmp/run.out" 2>&1 || 
 args=$(cat "$tmp/ag/source/tools/grade.py.args" 2>/dev/null || true)
 [[ " $args " == *" --labs 03 "* ]] || fail "run_autograder runs the grader with '$args', without --labs 03"
 [[ " $args " == *" --out $tmp/ag/results "* ]] || fail "run_autograder does not write to results/: '$args'"
+
+# Its setup.sh stops loudly, before the grading build, when ./workbook setup fails or glad is not glad 2
+# (a stand-in workbook fails its setup, or has a Python whose glad is glad 1).
+cat >"$tmp/ag/source/workbook" <<'EOF'
+#!/usr/bin/env bash
+glad_python() { echo /usr/bin/python3; }
+is_glad2() { return 1; }
+if [[ "${BASH_SOURCE[0]}" != "$0" ]]; then return 0; fi
+[ "$1" = setup ] && exit "${STUB_SETUP_EXIT:-0}"
+EOF
+for case in "1 ./workbook setup could not install" "0 /usr/bin/python3 -m glad is not glad 2"; do
+  if out=$(STUB_SETUP_EXIT=${case%% *} WB_AUTOGRADER="$tmp/ag" bash "$tmp/ag/source/setup.sh" 2>&1); then
+    fail "setup.sh succeeded although ${case#* }"
+  elif ! grep -q "^setup.sh: FAILED: ${case#* }" <<<"$out"; then
+    fail "setup.sh does not say '${case#* }': $out"
+  fi
+done
 
 # Two labs: their total, and both in gradescope-labs.
 "$bundle" "$tmp/two.zip" --labs 3,04 >"$tmp/two.out" 2>&1 || fail "--labs 3,04 failed: $(cat "$tmp/two.out")"

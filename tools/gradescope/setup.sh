@@ -8,7 +8,7 @@ set -euo pipefail
 fail() { echo "setup.sh: FAILED: $*" >&2; exit 1; }
 trap 'echo "setup.sh: FAILED at line $LINENO: \"$BASH_COMMAND\" exited with $?" >&2' ERR
 cd "${WB_AUTOGRADER:-/autograder}/source"  # WB_AUTOGRADER: only tests set it
-[ -x ./workbook ] || fail "no ./workbook in $PWD: the bundle must be unpacked here (./workbook gradescope-bundle makes it)"
+[ -f ./workbook ] || fail "no ./workbook in $PWD: the bundle must be unpacked here (./workbook gradescope-bundle makes it)"
 # shellcheck disable=SC1091
 os=$( (. /etc/os-release && echo "$PRETTY_NAME") 2>/dev/null || echo "an unknown system")
 echo "setup.sh: setting up the autograder on $os"
@@ -16,7 +16,8 @@ export DEBIAN_FRONTEND=noninteractive
 
 # 1. The packages, and glad 2: ./workbook setup names a package this distribution does not have, and
 # where python3-glad is glad 1 (Ubuntu 22.04) installs glad2 from PyPI (ensure_glad2 in ./workbook).
-./workbook setup || fail "./workbook setup could not install what the workbook needs (its message is above)"
+# (through bash: an unzip that drops the executable bits does not stop it)
+bash ./workbook setup || fail "./workbook setup could not install what the workbook needs (its message is above)"
 
 # 2. Checked again with the workbook's own test, which tells glad 1 from glad 2.
 # shellcheck source=../../workbook
