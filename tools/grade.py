@@ -2,7 +2,7 @@
 """Grades student submissions of the Shadow Lab Workbook: ./workbook grade (see docs/instructors.md).
 
 A submission is a folder or an archive (.zip, .tar, .tar.gz, .tgz) holding a student's copy of the
-workbook, or just its labs/ folder. Only the exercise files that labs/*/exercises.json names are
+workbook, or just its labs/ folder, or (when one lab is graded) just the exercise files, flat. Only the exercise files that labs/*/exercises.json names are
 taken from it; they are laid over this (instructor) tree in a grading build that has the framework
 prebuilt, so a submission costs one compile per lab. Each exercise's tests run in their own process
 with a time limit, without network, and as an unprivileged user when the grader runs as root. A
