@@ -7,15 +7,13 @@
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 tmp=${1:?usage: export_student_test.sh SCRATCH_DIR}
-rm -rf "$tmp" && mkdir -p "$tmp/repo"
+rm -rf "$tmp" && mkdir -p "$tmp"
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
-# A scratch repository with this checkout's tracked files as they are on disk, committed.
-(cd "$root" && git ls-files -z | tar --null -T - -cf -) | tar -xf - -C "$tmp/repo"
-git -C "$tmp/repo" init -q
-git -C "$tmp/repo" add -A
-git -C "$tmp/repo" -c user.name=test -c user.email=test@example.com commit -qm scratch
+# shellcheck source=scratch_repo.sh
+source "$root/tests/framework/scratch_repo.sh"
+scratch_repo "$root" "$tmp/repo"  # this checkout's tracked files as they are on disk, committed
 # Work in progress: an edit of a tracked file and a new file, neither committed.
 echo "WORK IN PROGRESS" >>"$tmp/repo/labs/01_depth_map/README.md"
 echo "draft" >"$tmp/repo/labs/01_depth_map/draft-notes.md"
