@@ -12,9 +12,12 @@ if(NOT EXISTS ${WB_GLAD_DIR}/src/gl.c OR NOT EXISTS ${WB_GLAD_DIR}/src/egl.c)
             --reproducible c --loader
     RESULT_VARIABLE glad_result OUTPUT_QUIET ERROR_VARIABLE glad_error)
   if(NOT glad_result EQUAL 0)
+    # glad 1 (Ubuntu 22.04's python3-glad 0.1.30) has --api too, but no `c` command: it fails here.
     message(FATAL_ERROR "Generating glad failed: ${glad_error}\n"
-                        "Install Debian's generator with: sudo apt-get install python3-glad "
-                        "(it must run with /usr/bin/python3).")
+                        "This needs glad 2, run with ${WB_SYSTEM_PYTHON3}: Debian 12 and Ubuntu 24.04 ship it "
+                        "as python3-glad (sudo apt-get install python3-glad). Ubuntu 22.04's python3-glad is "
+                        "glad 1; there, install glad 2 with: sudo ${WB_SYSTEM_PYTHON3} -m pip install glad2 "
+                        "(tools/gradescope/setup.sh does).")
   endif()
 endif()
 add_library(glad STATIC ${WB_GLAD_DIR}/src/gl.c ${WB_GLAD_DIR}/src/egl.c)

@@ -2,7 +2,7 @@
 """Grades student submissions of the Shadow Lab Workbook: ./workbook grade (see docs/instructors.md).
 
 A submission is a folder or an archive (.zip, .tar, .tar.gz, .tgz) holding a student's copy of the
-workbook, or just its labs/ folder. Only the exercise files that labs/*/exercises.json names are
+workbook, or just its labs/ folder, or (when one lab is graded) just the exercise files, flat. Only the exercise files that labs/*/exercises.json names are
 taken from it; they are laid over this (instructor) tree in a grading build that has the framework
 prebuilt, so a submission costs one compile per lab. Each exercise's tests run in their own process
 with a time limit, without network, and as an unprivileged user when the grader runs as root. A
@@ -72,11 +72,47 @@ def student_files(lab):
 
 
 # --- Submissions ----------------------------------------------------------------------------------
+ARCHIVE_SUFFIXES = (".tar.gz", ".tgz", ".zip", ".tar")  # longest first: "x.tar.gz" is "x"
+
+
+def archive_suffix(path):
+    """The archive suffix of a file name (.zip, .tar, .tar.gz, .tgz, any case), or "" for none."""
+    lower = path.name.lower()
+    return next((s for s in ARCHIVE_SUFFIXES if lower.endswith(s) and len(lower) > len(s)), "")
+
+
+def submission_name(path):
+    """A student's name from a submission: the whole name less a known archive suffix, so that
+    erin.smith.zip is "erin.smith" and erin.jones (a folder) is "erin.jones"."""
+    suffix = archive_suffix(path) if path.is_file() else ""
+    return path.name[:len(path.name) - len(suffix)] if suffix else path.name
+
+
+def unique_names(subs):
+    """{submission: name}: submission_name, with -2, -3, ... after a name that an earlier submission
+    (in sorted order) already has (erin/ and erin.zip are "erin" and "erin-2"), so no result
+    overwrites another."""
+    names, taken = {}, set()
+    for sub in sorted(subs):
+        base = submission_name(sub)
+        name, k = base, 2
+        while name in taken:
+            name, k = f"{base}-{k}", k + 1
+        taken.add(name)
+        names[sub] = name
+    return names
+
+
 def unpack(submission, scratch):
-    """A folder to read the submission from (archives are extracted safely into scratch)."""
+    """A folder to read the submission from (archives are extracted safely into scratch). A folder
+    that holds nothing but one archive (an upload of a zip that was not unpacked) is that archive."""
     path = Path(submission)
     if path.is_dir():
-        return path
+        entries = [p for p in path.iterdir() if not p.name.startswith(".")]
+        if len(entries) == 1 and entries[0].is_file() and not entries[0].is_symlink() and archive_suffix(entries[0]):
+            path = entries[0]
+        else:
+            return path
     if not path.exists():
         raise ValueError(f"no such submission: {path}")
     dest = Path(tempfile.mkdtemp(prefix="submission-", dir=scratch))
@@ -93,19 +129,39 @@ def unpack(submission, scratch):
                        and ".." not in Path(m.name).parts and m.size <= 64 * MAX_FILE_BYTES]
             t.extractall(dest, members=members)
     else:
-        raise ValueError(f"{path} is neither a folder nor a .zip/.tar archive")
+        raise ValueError(f"{path.name} is neither a folder nor a .zip/.tar archive")
     return dest
 
 
-def find_student_file(folder, lab, rel):
-    """The submission's copy of labs/<lab>/<rel>: at that path under the folder or under one level of
-    nesting (an archive with a top folder), else the only file whose path ends with <lab>/<rel>."""
-    for base in [folder] + [d for d in folder.iterdir() if d.is_dir()]:
+def _regular(p):
+    return p.is_file() and not p.is_symlink()
+
+
+def find_student_file(folder, lab, rel, assignment_labs=None):
+    """(path or None, note or None): the submission's copy of labs/<lab>/<rel>. It is looked for at
+    that path under the folder or under one level of nesting (an archive with a top folder), then as
+    the only file whose path ends with <lab>/<rel>, then as a flat upload: the file alone
+    (exercise.cpp, exercise.glsl or shaders/exercise.glsl at the top of the upload), which belongs to
+    the lab only when the assignment (assignment_labs, the names of the labs graded) has one lab;
+    with several, a flat file is ambiguous and the note says so."""
+    bases = [folder] + sorted(d for d in folder.iterdir() if d.is_dir() and not d.is_symlink())
+    for base in bases:
         candidate = base / "labs" / lab / rel
-        if candidate.is_file():
-            return candidate
-    matches = [p for p in folder.rglob(Path(rel).name) if p.as_posix().endswith(f"{lab}/{rel}") and p.is_file()]
-    return matches[0] if len(matches) == 1 else None
+        if _regular(candidate):
+            return candidate, None
+    matches = [p for p in folder.rglob(Path(rel).name) if p.as_posix().endswith(f"{lab}/{rel}") and _regular(p)]
+    if len(matches) == 1:
+        return matches[0], None
+    flat = next((p for base in bases for p in (base / rel, base / Path(rel).name) if _regular(p)), None)
+    if flat is None:
+        return None, None
+    shown = flat.relative_to(folder).as_posix()
+    labs = list(assignment_labs or [])
+    if labs == [lab]:
+        return flat, f"{shown} (uploaded without its folder) is graded as labs/{lab}/{rel}"
+    return None, (f"{shown} is in the upload without its folder, and this assignment grades labs "
+                  f"{', '.join(l[:2] for l in labs)}: it cannot tell which lab it belongs to, so labs/{lab}/{rel} "
+                  f"is not graded from it; upload it as labs/{lab}/{rel}")
 
 
 def regular_inside(path, folder):
@@ -535,7 +591,9 @@ class Grader:
             for lab in self.labs:  # every lab's files first: one parallel build for all when they compile
                 files, notes = {}, []
                 for rel in student_files(lab):
-                    found = find_student_file(folder, lab["name"], rel)
+                    found, note = find_student_file(folder, lab["name"], rel, [l["name"] for l in self.labs])
+                    if note:
+                        notes.append(note)
                     if found is None:
                         notes.append(f"labs/{lab['name']}/{rel} is not in the submission: the stub is graded")
                     elif not regular_inside(found, folder):
@@ -623,6 +681,36 @@ def status_of(failures):
             else "not implemented" if "NOT IMPLEMENTED" in text else "wrong")
 
 
+# What students see on Gradescope holds none of the grader's paths or build commands (the instructor's
+# report.md, report.html and junit.xml keep them): a line of make or of a compiler command goes, the
+# student's own file is named as labs/NN_name/..., and any other path shrinks to its file name.
+_BUILD_LINE = re.compile(r"^\s*(g?make(\[\d+\])?: |\[\s*\d+%\]|cd /|/usr/bin/(c\+\+|g\+\+|gcc|cc|clang|ld)\b|"
+                         r"(/\S+/)?cmake (--build|-S|-E)\b|ninja: |Scanning dependencies|Consolidate compiler)")
+_STUDENT_FILE = re.compile(r"(?:[\w.+-]*/)*(labs/\d\d_[\w-]+/[^\s:'\"()\[\],]+)")
+_ANY_PATH = re.compile(r"(?<![\w.~-])(?:/|(?:\.{1,2}|[\w.+-]+)/)(?:[^\s/:'\"()\[\],]+/)+([^\s/:'\"()\[\],]+)")
+
+
+def student_visible(text):
+    """`text` without grader paths, build commands or absolute paths (see above)."""
+    lines = [l for l in text.replace(str(ROOT) + "/", "").splitlines() if not _BUILD_LINE.search(l)]
+    out = "\n".join(lines)
+    out = _STUDENT_FILE.sub(r"\1", out)
+    return _ANY_PATH.sub(lambda m: m.group(0) if m.group(0).startswith("labs/") else m.group(1), out)
+
+
+VISIBILITIES = ("visible", "hidden", "after_due_date", "after_published")
+
+
+def gradescope_visibility(visibility, points):
+    """The visibility written for a test with `points`. Gradescope's specification: students do not see
+    their total score while a test is hidden, but `hidden` tests do not count for that, since they are
+    meant to carry no points; held-out points under `hidden` would show in the total, so such a test
+    is written as after_published (shown when the instructor publishes the grades)."""
+    if visibility not in VISIBILITIES:
+        raise ValueError(f"visibility {visibility!r} is not one of {', '.join(VISIBILITIES)}")
+    return "after_published" if visibility == "hidden" and points > 0 else visibility
+
+
 class Results:
     def __init__(self, out_dir, name, labs, sandbox):
         self.out, self.name, self.labs, self.sandbox = out_dir, name, labs, sandbox
@@ -659,7 +747,7 @@ class Results:
             self.entries.append({"lab": lab["name"], "id": e["id"], "title": e["title"] + " (held-out tests)",
                                  "points": hidden_points, "score": hidden_points if h_ok else 0, "ok": h_ok,
                                  "failures": h_failures, "images": [], "notes": [], "extension": False,
-                                 "visibility": lab["hidden_visibility"],
+                                 "visibility": gradescope_visibility(lab["hidden_visibility"], hidden_points),
                                  "status": "done" if h_ok else status_of(h_failures)})
         self.write_json(partial=True)
 
@@ -671,20 +759,49 @@ class Results:
         lines = [f"**{x['status']}**"] + [f"- {n}" for n in x["notes"]]
         for test, msg in x["failures"][:5]:
             lines.append(f"\n`{test}`\n```\n{msg.strip()[:2000]}\n```" if test else f"\n```\n{msg.strip()[:2000]}\n```")
-        return "\n".join(lines).replace(str(ROOT) + "/", "")
+        return student_visible("\n".join(lines))
+
+    def environment(self):
+        """How the tests ran, for the instructor: a Gradescope test that students never see, with no
+        points, failed when the isolation was weaker than intended (no network namespace in the
+        container, tests not run as nobody)."""
+        notes = self.sandbox.notes
+        text = (f"Tests ran as {self.sandbox.user}, each exercise in its own process.\n\n" +
+                ("".join(f"- **{n}**\n" for n in notes) if notes else "- Isolation as intended: no network, an "
+                 "unprivileged user."))
+        return {"name": "Grading environment (instructors only)", "score": 0, "max_score": 0,
+                "status": "failed" if notes else "passed", "output": text, "output_format": "md",
+                "tags": ["grading-environment"], "visibility": "hidden"}
+
+    def summary(self, partial):
+        """The top-level output, which students always see: the points of the tests they can see now,
+        never the total while held-out tests (after_due_date, after_published) are still hidden."""
+        if partial:
+            done = len({(x["lab"], x["id"]) for x in self.entries})
+            total = sum(len(l["exercises"]) for l in self.labs)
+            return f"Graded {done} of {total} exercises so far (grading stopped or is still running)."
+        later = [x for x in self.entries if x["visibility"] != "visible" and x["points"] > 0 and not x["extension"]]
+        if later:
+            seen = [x for x in self.entries if x["visibility"] == "visible"]
+            text = (f"{sum(x['score'] for x in seen)} of {sum(x['points'] for x in seen if not x['extension'])} "
+                    f"points in the tests shown now. Held-out tests decide {sum(x['points'] for x in later)} more "
+                    "points; they and the total are shown after the due date (or when grades are published).")
+        else:
+            text = f"{self.score()} of {self.max_score} points."
+        return student_visible(text + "".join(f"\n\n**Note:** {p}." for p in self.problems))
 
     def write_json(self, partial, elapsed=0.0):
+        """results.json, with only the keys of Gradescope's autograder specification (docs/gradescope.md).
+        The top-level score is the total (the grade); Gradescope hides it from students while a test
+        that carries points is not visible yet."""
         tests = [{"name": f"{x['id']} {x['title']}", "number": x["id"], "score": x["score"],
                   "max_score": 0 if x["extension"] else x["points"], "status": "passed" if x["ok"] else "failed",
                   "output": self.entry_output(x), "output_format": "md", "visibility": x["visibility"]}
                  for x in self.entries]
-        done = len({(x["lab"], x["id"]) for x in self.entries})
-        total = sum(len(l["exercises"]) for l in self.labs)
-        summary = (f"Graded {done} of {total} exercises so far (grading stopped or is still running)." if partial
-                   else f"{self.score()} of {self.max_score} points." +
-                   "".join(f"\n\n**Note:** {p}." for p in self.problems))
-        doc = {"score": self.score(), "max_score": self.max_score, "output": summary, "output_format": "md",
-               "visibility": "visible", "stdout_visibility": "hidden", "tests": tests}
+        doc = {"score": self.score(), "output": self.summary(partial), "output_format": "md",
+               "visibility": "visible", "stdout_visibility": "hidden",
+               "extra_data": {"max_score": self.max_score, "student": self.name},
+               "tests": tests + [self.environment()]}
         if not partial:
             doc["execution_time"] = round(elapsed, 1)
         tmp = self.out / "results.json.tmp"
@@ -696,7 +813,8 @@ class Results:
         self.write_junit(elapsed)
         self.write_reports(elapsed)
         return {"name": self.name, "score": self.score(), "max_score": self.max_score, "entries": self.entries,
-                "seconds": elapsed, "timing": self.timing, "problems": self.problems}
+                "seconds": elapsed, "timing": self.timing, "problems": self.problems,
+                "environment": list(self.sandbox.notes)}
 
     def write_junit(self, elapsed):
         parts = ['<?xml version="1.0" encoding="UTF-8"?>',
@@ -722,11 +840,12 @@ class Results:
               f"**{self.score()} of {self.max_score} points** (graded in {elapsed:.0f} s: build "
               f"{self.timing['build']:.0f} s, tests {self.timing['tests']:.0f} s; tests ran as "
               f"{self.sandbox.user}, each exercise in its own process)."]
-        md += [f"- note: {n}" for n in self.sandbox.notes]
+        md += [f"- **isolation: {n}**" for n in self.sandbox.notes]
         md += [f"- **{p}**" for p in self.problems]
         body = [f"<h1>Grading report: {html.escape(self.name)}</h1>",
                 f"<p><b>{self.score()} of {self.max_score} points</b> (graded in {elapsed:.0f} s)</p>"]
         body += [f"<p><b>{html.escape(p)}</b></p>" for p in self.problems]
+        body += [f"<p><b>isolation: {html.escape(n)}</b></p>" for n in self.sandbox.notes]
         for lab in self.labs:
             mine = [x for x in self.entries if x["lab"] == lab["name"]]
             md += ["", f"## Lab {lab['nn']}: {lab['title']}", "", "| exercise | status | points |", "|---|---|---|"]
@@ -790,6 +909,10 @@ def write_batch_outputs(out, results, labs):
     if troubled:
         md += ["", "Not everything could be graded (what was not graded scored 0; see each report):", ""]
         md += [f"- {r['name']}: {'; '.join(r['problems'])}" for r in troubled]
+    isolation = sorted({n for r in results for n in r.get("environment", [])})
+    if isolation:
+        md += ["", "Isolation was weaker than intended (each results.json has it in the hidden test "
+               "\"Grading environment\"):", ""] + [f"- {n}" for n in isolation]
     (out / "summary.md").write_text("\n".join(md) + "\n")
 
 
@@ -846,7 +969,12 @@ def main():
     ap.add_argument("--batch", action="store_true", help="grade every folder or archive inside SUBMISSION")
     ap.add_argument("--out", help="where the results go (default: grades/<name>)")
     ap.add_argument("--labs", help="only these labs, e.g. 01,02")
-    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2, help="submissions graded at once (batch)")
+    # One at a time by default: one grading tree already builds and tests with every core. Measured on 2
+    # cores (4 submissions of lab 01, docs/instructors.md): --jobs 2 took as long as --jobs 1 once its
+    # second tree was built (34 s against 35 s), and 104 s the first time, when it builds that tree.
+    ap.add_argument("--jobs", type=int, default=1,
+                    help="submissions graded at once (batch; default 1: each one has a grading tree of its own "
+                         "and uses every core already)")
     ap.add_argument("--timeout", type=int, default=60, help="seconds for one exercise's tests")
     ap.add_argument("--build-timeout", type=int, default=DEFAULT_BUILD_TIMEOUT,
                     help="seconds for one build of a submission's code; a build that runs longer is stopped and "
@@ -861,16 +989,17 @@ def main():
         return 0
     if not args.submission:
         ap.error("a SUBMISSION (or --batch DIR, or --prepare-only) is needed")
+    if args.batch and args.name:
+        ap.error("--name names one submission; in a batch each is named after its file or folder")
     src = Path(args.submission)
     if not src.exists():
         log(f"grade: no such submission or folder: {src}")
         return 2
-    subs = sorted(p for p in src.iterdir() if p.is_dir() or p.suffix in (".zip", ".tar", ".tgz", ".gz")) \
-        if args.batch else [src]
+    subs = sorted(p for p in src.iterdir() if p.is_dir() or archive_suffix(p)) if args.batch else [src]
     if args.batch and not subs:
         log(f"grade: {src} holds no submissions (folders or .zip/.tar archives)")
         return 2
-    out = Path(args.out) if args.out else ROOT / "grades" / (src.name if args.batch else src.name.split(".")[0])
+    out = Path(args.out) if args.out else ROOT / "grades" / (src.name if args.batch else submission_name(src))
     out.mkdir(parents=True, exist_ok=True)
     workers = max(1, min(args.jobs, len(subs)))
     base = ROOT / "build-grade"
@@ -884,8 +1013,13 @@ def main():
         log(f"grade: ready in {secs:.0f} s")
     done = [0]
 
+    names = unique_names(subs)  # erin.smith.zip and erin.jones are two students, erin/ and erin.zip too
+    for sub, name in names.items():
+        if name != submission_name(sub):
+            log(f"grade: {sub.name} is graded as {name}: another submission is named {submission_name(sub)}")
+
     def where(sub):
-        name = args.name or sub.name.split(".")[0]
+        name = args.name or names[sub]
         return name, (out / name if args.batch else out)
 
     def grade_one(ws, sub):

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # ./workbook on a machine without apt (no dpkg-query, no apt-get on PATH): it checks for the
 # dependencies themselves, goes on when they are all there, and names exactly what is missing (exit 1)
-# when they are not; glad 1 is not taken for glad 2. Usage: workbook_setup_test.sh SCRATCH_DIR
+# when they are not; glad 1 is not taken for glad 2; with apt, a package name apt does not know is
+# named. Usage: workbook_setup_test.sh SCRATCH_DIR
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 tmp=${1:?usage: workbook_setup_test.sh SCRATCH_DIR}
@@ -82,5 +83,25 @@ fake_python noglad fail fail
   is_glad2 "$(glad_python)" || echo "FAIL: $(glad_python), which the build uses, has no glad 2"
 ) >"$tmp/glad.out" 2>&1 || fail "sourcing the workbook failed: $(cat "$tmp/glad.out")"
 while IFS= read -r line; do fail "${line#FAIL: }"; done < <(grep '^FAIL' "$tmp/glad.out" || true)
+
+# 4. With apt, a package this system's apt does not know (names differ between Debian and Ubuntu):
+# exit 1, naming it (fake dpkg-query, apt-get, apt-cache and sudo stand in for the real ones).
+tools "$tmp/apt" "${base[@]}" id
+fake() {  # NAME BODY
+  printf '#!%s\n%s\n' "$bash" "$2" >"$tmp/apt/$1"
+  chmod +x "$tmp/apt/$1"
+}
+fake dpkg-query 'exit 1'  # nothing is installed
+fake apt-get '[ "$1" = update ] && exit 0; echo "E: Unable to locate package libimgui-dev" >&2; exit 100'
+fake apt-cache '[ "$2" = libimgui-dev ] && exit 100; exit 0'
+fake sudo 'exec "$@"'
+if out=$(PATH="$tmp/apt" "$bash" "$root/workbook" setup 2>&1); then
+  fail "setup succeeded although apt-get failed: $out"
+else
+  code=$?
+  [ "$code" = 1 ] || fail "setup exited $code when apt-get failed, expected 1"
+  grep -q "this system has no package named libimgui-dev" <<<"$out" ||
+    fail "setup does not name the package apt does not know: $out"
+fi
 
 [ "$failures" = 0 ] && echo "workbook setup without apt: every check passed" || exit 1

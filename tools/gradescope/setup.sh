@@ -1,17 +1,36 @@
 #!/usr/bin/env bash
-# Gradescope runs this once, when it builds the autograder image (as root, with network).
-# It installs the Debian/Ubuntu packages the workbook needs and prebuilds the grading framework, so
-# grading a submission later costs only its exercise files.
+# Gradescope runs this once, when it builds the autograder image (as root, with network), on its
+# Ubuntu 22.04 or 24.04 base image, in /autograder/source where it unpacked the bundle. It installs the
+# packages the workbook needs, makes sure glad 2 is there, and prebuilds the grading framework for the
+# assignment's labs (gradescope-labs), so grading a submission later costs only its exercise files.
+# Anything missing stops it with a line that starts with "setup.sh: FAILED" and says what.
 set -euo pipefail
-cd /autograder/source
-apt-get update -qq
-./workbook setup
-# glad2 (python3-glad on Debian 12). An older distribution may ship glad 1, without --api.
-if ! /usr/bin/python3 -m glad --help 2>/dev/null | grep -q -- "--api"; then
-  apt-get install -y -qq python3-pip >/dev/null
-  /usr/bin/python3 -m pip install --break-system-packages glad2 2>/dev/null || /usr/bin/python3 -m pip install glad2
-fi
-# The tests run as the unprivileged user nobody: it must read the tree and the build.
-chmod -R a+rX /autograder/source
-/usr/bin/python3 tools/grade.py --prepare-only
-chmod -R a+rX /autograder/source
+fail() { echo "setup.sh: FAILED: $*" >&2; exit 1; }
+trap 'echo "setup.sh: FAILED at line $LINENO: \"$BASH_COMMAND\" exited with $?" >&2' ERR
+cd "${WB_AUTOGRADER:-/autograder}/source"  # WB_AUTOGRADER: only tests set it
+[ -f ./workbook ] || fail "no ./workbook in $PWD: the bundle must be unpacked here (./workbook gradescope-bundle makes it)"
+# shellcheck disable=SC1091
+os=$( (. /etc/os-release && echo "$PRETTY_NAME") 2>/dev/null || echo "an unknown system")
+echo "setup.sh: setting up the autograder on $os"
+export DEBIAN_FRONTEND=noninteractive
+
+# 1. The packages, and glad 2: ./workbook setup names a package this distribution does not have, and
+# where python3-glad is glad 1 (Ubuntu 22.04) installs glad2 from PyPI (ensure_glad2 in ./workbook).
+# (through bash: an unzip that drops the executable bits does not stop it)
+bash ./workbook setup || fail "./workbook setup could not install what the workbook needs (its message is above)"
+
+# 2. Checked again with the workbook's own test, which tells glad 1 from glad 2.
+# shellcheck source=../../workbook
+source ./workbook  # the functions only
+py=$(glad_python)
+is_glad2 "$py" || fail "${py:-python3} -m glad is not glad 2, which cmake/Glad.cmake runs"
+echo "setup.sh: $py -m glad is glad 2"
+
+# 3. The grading framework, for the labs of this assignment. The tests run as the unprivileged user
+# nobody: it must read the tree and the build.
+labs=$(tr -d '[:space:]' <gradescope-labs 2>/dev/null || true)
+chmod -R a+rX .
+/usr/bin/python3 tools/grade.py --prepare-only ${labs:+--labs "$labs"} ||
+  fail "the grading build failed (the compiler's or CMake's message is above)"
+chmod -R a+rX .
+echo "setup.sh: the autograder is ready (labs: ${labs:-all})"

@@ -1,0 +1,201 @@
+#!/usr/bin/python3
+"""What the grader writes for Gradescope and for a batch (ctest -L grading; no build needed):
+- results.json uses only the keys of Gradescope's autograder specification (docs/gradescope.md);
+- what students see before the due date (the top-level output, the visible tests) never gives away
+  the points of held-out tests, and held-out points under `hidden` are written as after_published;
+- student-visible text holds no grader path, build command or absolute path (report.md keeps them);
+- weaker isolation (no network namespace) is in results.json for the instructor and in report.md;
+- flat uploads (exercise.cpp, exercise.glsl without folders) belong to the assignment's only lab,
+  and are reported as ambiguous when it has several;
+- students in a batch get unique names (erin.smith.zip and erin.jones are two students)."""
+import csv
+import importlib.util
+import json
+import re
+import sys
+import tempfile
+import zipfile
+from pathlib import Path
+
+sys.dont_write_bytecode = True  # no __pycache__ in tools/
+ROOT = Path(__file__).resolve().parent.parent.parent
+spec = importlib.util.spec_from_file_location("grade", ROOT / "tools/grade.py")
+grade = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(grade)
+
+problems = []
+
+
+def check(cond, what):
+    if not cond:
+        problems.append(what)
+
+
+# Gradescope's autograder specification, "Output format" (gradescope-autograders.readthedocs.io/en/latest/specs/).
+TOP_KEYS = {"score", "execution_time", "output", "output_format", "test_output_format", "test_name_format",
+            "visibility", "stdout_visibility", "extra_data", "tests", "leaderboard"}
+TEST_KEYS = {"score", "max_score", "status", "name", "name_format", "number", "output", "output_format", "tags",
+             "visibility", "extra_data"}
+FORMATS = {"text", "html", "simple_format", "md", "ansi"}
+
+
+def check_spec(res, where):
+    check(set(res) <= TOP_KEYS, f"{where}: keys outside the specification: {sorted(set(res) - TOP_KEYS)}")
+    check(res.get("visibility", "visible") in grade.VISIBILITIES, f"{where}: visibility {res.get('visibility')}")
+    check(res.get("stdout_visibility", "hidden") in grade.VISIBILITIES, f"{where}: stdout_visibility")
+    check(res.get("output_format", "md") in FORMATS, f"{where}: output_format {res.get('output_format')}")
+    for t in res["tests"]:
+        check(set(t) <= TEST_KEYS, f"{where}: test {t.get('name')} has keys outside the specification: "
+              f"{sorted(set(t) - TEST_KEYS)}")
+        check(t.get("visibility", "visible") in grade.VISIBILITIES, f"{where}: test visibility {t.get('visibility')}")
+        check(t.get("status", "passed") in ("passed", "failed"), f"{where}: test status {t.get('status')}")
+        check(t.get("output_format", "text") in FORMATS, f"{where}: test output_format {t.get('output_format')}")
+
+
+def student_sees(res):
+    """Everything a student sees before the due date: the top-level output and the visible tests."""
+    seen = [res["output"]]
+    for t in res["tests"]:
+        if t.get("visibility", res.get("visibility", "visible")) == "visible":
+            seen += [t.get("name", ""), t.get("output", ""), str(t.get("score", ""))]
+    return "\n".join(seen)
+
+
+class Sandbox:
+    def __init__(self, notes):
+        self.notes, self.user = notes, "nobody"
+
+
+lab = {"name": "01_depth_map", "nn": "01", "title": "Depth map",
+       "exercises": [{"id": "01.1", "title": "Light fit", "file": "exercise.cpp", "points": 20},
+                     {"id": "01.2", "title": "Spot light", "file": "exercise.cpp", "points": 17}],
+       "hidden_points": {"01.1": 13}, "hidden_visibility": "after_due_date"}
+where = f"{ROOT}/build-grade/w0/submission/labs/01_depth_map/exercise.cpp"
+compile_error = (f"{where}:12:5: error: 'x' was not declared in this scope\n"
+                 "make[2]: *** [CMakeFiles/lab01_submission_exercise.dir/build.make:76: x.o] Error 1\n"
+                 f"gmake[1]: *** [CMakeFiles/Makefile2:321: all] Error 2\n"
+                 f"cd {ROOT}/build-grade/w0/build && /usr/bin/c++ -O2 -c {where}\n"
+                 "In file included from /usr/include/c++/12/bits/stl_vector.h:1123:5,\n"
+                 "diff: /autograder/source/build-grade/w0/build/test-output/lab01_submission/Scene/diff.png\n"
+                 "scratch: /tmp/grade-x1/submission-y2/labs/01_depth_map/exercise.cpp")
+
+with tempfile.TemporaryDirectory(prefix="gradescope-results-") as tmp:
+    tmp = Path(tmp)
+
+    # 1. Held-out tests after the due date: 01.1 passes its visible 7 points and its held-out 13 (which
+    # students must not learn before the due date); 01.2 fails to compile.
+    out = tmp / "one"
+    out.mkdir()
+    r = grade.Results(out, "erin.smith", [lab], Sandbox(["network namespaces are not available here: tests run "
+                                                          "with the network"]))
+    e1, e2 = lab["exercises"]
+    r.add(lab, e1, True, [], [], [], hidden_result=(True, [], ""), hidden=True)
+    r.add(lab, e2, False, [("", compile_error)], [], ["a note about " + where])
+    r.finish(1.0)
+    res = json.loads((out / "results.json").read_text())
+    check_spec(res, "1")
+    check(res["score"] == 20, f"1: the score (the grade) is {res['score']}, expected 20 (7 + 13 held out)")
+    held = [t for t in res["tests"] if "held-out" in t["name"]]
+    check(len(held) == 1 and held[0]["visibility"] == "after_due_date" and held[0]["max_score"] == 13,
+          f"1: the held-out test is {held}")
+    seen = student_sees(res)
+    check("7 of 24 points" in res["output"], f"1: the output does not give the visible points 7 of 24: {res['output']!r}")
+    for leak in ("20", "13 of", "37"):
+        check(not re.search(rf"(?<![\d.]){leak}(?![\d.])", res["output"]),
+              f"1: the student-visible output gives away held-out points ({leak!r}): {res['output']!r}")
+    # 2. No grader path, build command or absolute path in what students see.
+    for bad in (str(ROOT), "build-grade", "/autograder", "/tmp/", "/usr/", "make[2]", "gmake", "/usr/bin/c++", "cd /"):
+        check(bad not in seen, f"2: students see {bad!r}")
+    check(not re.search(r"(^|[\s'\"(])/\w", seen), "2: students see an absolute path: " +
+          next((l for l in seen.splitlines() if re.search(r"(^|[\s'\"(])/\w", l)), ""))
+    check("labs/01_depth_map/exercise.cpp:12:5: error" in seen, "2: the compiler message lost the student's file:line")
+    report = (out / "report.md").read_text()
+    check("build-grade/w0/submission/labs/01_depth_map/exercise.cpp" in report, "2: report.md lost the grader's path")
+    # 3. Weaker isolation is reported to the instructor (a hidden test with no points) and in report.md.
+    env = [t for t in res["tests"] if "grading-environment" in t.get("tags", [])]
+    check(len(env) == 1 and env[0]["visibility"] == "hidden" and env[0]["max_score"] == 0
+          and env[0]["status"] == "failed" and "tests run with the network" in env[0]["output"],
+          f"3: the isolation note is not in a hidden instructor test: {env}")
+    check("isolation: network namespaces are not available" in report, "3: report.md does not say the isolation failed")
+    check("tests run with the network" not in seen, "3: students see the isolation note")
+
+    # 4. `hidden` held-out tests carry points: Gradescope would show them in the total, so they are
+    # written as after_published; a visibility that Gradescope does not know is refused.
+    check(grade.gradescope_visibility("hidden", 13) == "after_published", "4: hidden with points stays hidden")
+    check(grade.gradescope_visibility("hidden", 0) == "hidden", "4: hidden without points changed")
+    try:
+        grade.gradescope_visibility("later", 5)
+        check(False, "4: an unknown visibility was accepted")
+    except ValueError:
+        pass
+
+    # 5. Without held-out tests the output gives the total.
+    out = tmp / "five"
+    out.mkdir()
+    plain = dict(lab, hidden_points={})
+    r = grade.Results(out, "x", [plain], Sandbox([]))
+    r.add(plain, e1, True, [], [], [])
+    r.add(plain, e2, True, [], [], [])
+    r.finish(1.0)
+    res = json.loads((out / "results.json").read_text())
+    check_spec(res, "5")
+    check(res["output"].startswith("37 of 37 points"), f"5: output {res['output']!r}")
+    env = [t for t in res["tests"] if "grading-environment" in t.get("tags", [])]
+    check(env and env[0]["status"] == "passed", "5: the grading environment test failed with full isolation")
+
+    # 6. Flat uploads.
+    sub = tmp / "flat"
+    (sub / "shaders").mkdir(parents=True)
+    (sub / "exercise.cpp").write_text("int x;\n")
+    (sub / "exercise.glsl").write_text("// glsl\n")
+    path, note = grade.find_student_file(sub, "03_pcf", "exercise.cpp", ["03_pcf"])
+    check(path == sub / "exercise.cpp" and note and "labs/03_pcf/exercise.cpp" in note,
+          f"6: a flat exercise.cpp in a one-lab assignment: {path}, {note}")
+    path, note = grade.find_student_file(sub, "03_pcf", "shaders/exercise.glsl", ["03_pcf"])
+    check(path == sub / "exercise.glsl", f"6: a flat exercise.glsl in a one-lab assignment: {path}, {note}")
+    path, note = grade.find_student_file(sub, "03_pcf", "exercise.cpp", ["03_pcf", "04_esm"])
+    check(path is None and note and "cannot tell which lab" in note and "03, 04" in note,
+          f"6: a flat file in a two-lab assignment is not reported as ambiguous: {path}, {note}")
+    full = tmp / "repo" / "workbook-main" / "labs" / "03_pcf" / "shaders"
+    full.mkdir(parents=True)
+    (full / "exercise.glsl").write_text("// glsl\n")
+    path, note = grade.find_student_file(tmp / "repo", "03_pcf", "shaders/exercise.glsl", ["03_pcf", "04_esm"])
+    check(path == full / "exercise.glsl" and note is None, f"6: the repository layout: {path}, {note}")
+    path, note = grade.find_student_file(tmp / "repo", "03_pcf", "exercise.cpp", ["03_pcf"])
+    check(path is None and note is None, f"6: a missing file: {path}, {note}")
+    # An upload that is one zip of flat files, left as it is in the submission folder.
+    up = tmp / "upload"
+    up.mkdir()
+    with zipfile.ZipFile(up / "mine.zip", "w") as z:
+        z.writestr("exercise.cpp", "int y;\n")
+    folder = grade.unpack(up, tmp)
+    path, _ = grade.find_student_file(folder, "03_pcf", "exercise.cpp", ["03_pcf"])
+    check(path is not None and path.read_text() == "int y;\n", f"6: a folder holding one zip: {path}")
+
+    # 7. Unique names in a batch.
+    batch = tmp / "batch"
+    batch.mkdir()
+    for d in ("erin.jones", "erin", "bob"):
+        (batch / d).mkdir()
+    for f in ("erin.smith.zip", "erin.zip", "bob.tar.gz", "carl.TGZ", "dana.tar"):
+        (batch / f).write_bytes(b"")
+    names = grade.unique_names(list(batch.iterdir()))
+    by_file = {p.name: n for p, n in names.items()}
+    check(len(set(names.values())) == len(names), f"7: names collide: {by_file}")
+    check(by_file.get("erin.smith.zip") == "erin.smith" and by_file.get("erin.jones") == "erin.jones",
+          f"7: erin.smith.zip and erin.jones: {by_file}")
+    check(by_file.get("carl.TGZ") == "carl" and by_file.get("dana.tar") == "dana", f"7: suffixes: {by_file}")
+    check({by_file.get("erin"), by_file.get("erin.zip")} == {"erin", "erin-2"}, f"7: erin/ and erin.zip: {by_file}")
+    check({by_file.get("bob"), by_file.get("bob.tar.gz")} == {"bob", "bob-2"}, f"7: bob/ and bob.tar.gz: {by_file}")
+    results = [{"name": n, "score": 1, "max_score": 37, "entries": [], "seconds": 1.0,
+                "timing": {"build": 0.0, "tests": 0.0}, "problems": [], "environment": ["no network namespace"]}
+               for n in names.values()]
+    grade.write_batch_outputs(batch, results, [lab])
+    rows = [row["student"] for row in csv.DictReader(open(batch / "gradebook.csv"))]
+    check(sorted(rows) == sorted(names.values()), f"7: gradebook rows {rows}")
+    check("no network namespace" in (batch / "summary.md").read_text(), "7: summary.md does not report the isolation")
+
+for p in problems:
+    print("FAIL:", p)
+print("gradescope results: " + ("all as expected" if not problems else f"{len(problems)} problems"))
+sys.exit(1 if problems else 0)
