@@ -52,6 +52,7 @@ void App::configureSettings(Lab& lab, const Options& o) {
 void App::loadScene(Lab& lab, const Options& o) {
   const fs::path path = o.scene.empty() ? fs::path(variant::kSourceDir) / lab.defaultScene() : fs::path(o.scene);
   lab.scene = Scene::load(path);
+  if (o.vary >= 0) varyScene(lab.scene, uint32_t(o.vary));
   if (lab.lightIndex >= int(lab.scene.lights.size()))
     throw UsageError("light.index=" + std::to_string(lab.lightIndex) + " but " + path.string() + " has " +
                      std::to_string(lab.scene.lights.size()) + " light(s)");

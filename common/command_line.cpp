@@ -34,6 +34,16 @@ int parseFrames(const std::string& v) {
   throw UsageError("bad --frames '" + v + "': expected a whole number of at least 1");
 }
 
+long long parseSeed(const std::string& v) {
+  try {
+    size_t used = 0;
+    const long long n = std::stoll(v, &used);
+    if (used == v.size() && n >= 0 && n <= 0xFFFFFFFFll) return n;
+  } catch (...) {
+  }
+  throw UsageError("bad --vary '" + v + "': expected a whole number from 0 to 4294967295");
+}
+
 std::pair<std::string, std::vector<std::string>> parseSweep(const std::string& v) {
   const auto eq = v.find('=');
   if (eq == std::string::npos || eq + 1 >= v.size()) throw UsageError("--sweep expects key=v1,v2,..., got '" + v + "'");
@@ -82,6 +92,8 @@ const OptionSpec kOptions[] = {
     {"--measure-visibility", "F.pfm",
      "with --metrics: measure this visibility buffer (same size) instead of the one drawn (a judge's check)",
      [](Options& o, const std::string& v) { o.measureVisibility = v, o.metrics = true; }},
+    {"--vary", "SEED", "turn the scene's lights and cameras a little, by a seed (grading-time variations)",
+     [](Options& o, const std::string& v) { o.vary = parseSeed(v); }},
     {"--quiet", nullptr, "print nothing for people on stdout (warnings and errors still go to stderr)",
      [](Options& o, const std::string&) { o.quiet = true; }},
     {"--list-settings", nullptr, "print every setting with its value, range and help, and exit",

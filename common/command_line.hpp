@@ -32,6 +32,7 @@ struct Options {
   std::string heatmap;            ///< --heatmap F.png (implies --metrics)
   std::string record;             ///< --record F.json: the machine-readable result of the run
   std::string measureVisibility;  ///< --measure-visibility F.pfm: measure this buffer, not the frame's
+  long long vary = -1;            ///< --vary SEED: perturb the scene's lights and cameras (-1: no)
   std::string sweepCsv;           ///< --sweep-csv F.csv
   glm::ivec2 size{960, 540};      ///< --size WxH
   int frames = -1;                ///< --frames N (-1: until the window closes; headless 1, bench 60)

@@ -8,6 +8,7 @@
 
 #include <fstream>
 #include <map>
+#include <random>
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -180,6 +181,22 @@ Scene Scene::load(const fs::path& file) {
       scene.boundsMax = glm::max(scene.boundsMax, p);
     }
   return scene;
+}
+
+void varyScene(Scene& scene, uint32_t seed) {
+  std::mt19937 rng(seed);  // fully specified, so every build turns the scene the same way
+  auto uniform = [&](float lo, float hi) { return lo + (hi - lo) * float(rng() >> 8) / float(1u << 24); };
+  const float size = glm::length(scene.boundsMax - scene.boundsMin);
+  for (auto& l : scene.lights) {
+    glm::vec3 axis(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
+    if (glm::length(axis) < 1e-3f) axis = glm::vec3(0, 1, 0);
+    const float sign = uniform(0, 1) < 0.5f ? -1.0f : 1.0f;
+    const glm::mat4 turn = glm::rotate(glm::mat4(1), glm::radians(sign * uniform(1, 3)), glm::normalize(axis));
+    l.direction = glm::normalize(glm::vec3(turn * glm::vec4(l.direction, 0)));
+    if (l.type != LightType::Directional)
+      l.position += 0.02f * size * glm::vec3(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)) / std::sqrt(3.0f);
+  }
+  for (auto& c : scene.cameras) c.yaw += uniform(-3, 3), c.pitch += uniform(-3, 3);
 }
 
 GpuScene::GpuScene(const Scene& scene) {

@@ -23,6 +23,7 @@ import json
 import os
 import re
 import shutil
+import secrets
 import signal
 import stat
 import subprocess
@@ -409,6 +410,8 @@ class Grader:
         self.build_timeout = build_timeout  # seconds for one build of the submission's code
         self.build_jobs = self.test_jobs = max(1, jobs)  # cores for this submission
         self.build_timeouts = 0  # how many builds of this submission were stopped
+        # A fresh variation of every scene per submission, unless the instructor fixes one to reproduce a grade.
+        self.vary_seed = int(os.environ.get("WB_GRADE_SEED") or secrets.randbelow(1 << 32))
 
     def build(self, labs):
         """Builds the submission app and tests of `labs`: (ok, compiler output). A build that runs past
@@ -490,7 +493,9 @@ class Grader:
         runner = self.ws.build / f"lab{lab['nn']}_submission_tests"
         judge = self.ws.build / f"lab{lab['nn']}_solution_tests"
         tape = self.ws.fresh_tape(tag)
-        env = dict(os.environ, HOME="/tmp", WB_STRICT_GL="1")
+        # WB_VARY_SEED: scene tests turn the scene a little and compare with the solution's render of
+        # the same variation, not with the published golden (tests/harness/harness.cpp).
+        env = dict(os.environ, HOME="/tmp", WB_STRICT_GL="1", WB_VARY_SEED=str(self.vary_seed))
         code, out, timed_out = self.sandbox.run(
             [str(runner), f"--gtest_filter={gfilter}", "--runner", str(tape)], self.timeout, env=env, cwd=tape,
             uid=self.ws.uid)
@@ -564,6 +569,7 @@ class Grader:
         out_dir.mkdir(parents=True, exist_ok=True)
         self.images = out_dir / "images"
         results = Results(out_dir, name, self.labs, self.sandbox)
+        results.vary_seed = self.vary_seed
         try:
             self.grade_into(results, submission)
         except Exception as exc:  # a bug of the grader, or of the machine: this submission only
@@ -769,7 +775,10 @@ class Results:
         points, failed when the isolation was weaker than intended (no network namespace in the
         container, tests not run as nobody)."""
         notes = self.sandbox.notes
-        text = (f"Tests ran as {self.sandbox.user}, each exercise in its own process.\n\n" +
+        seed = getattr(self, "vary_seed", None)
+        text = (f"Tests ran as {self.sandbox.user}, each exercise in its own process" +
+                (f"; scenes varied with seed {seed} (WB_GRADE_SEED={seed} reproduces this grade)" if seed is not None
+                 else "") + ".\n\n" +
                 ("".join(f"- **{n}**\n" for n in notes) if notes else "- Isolation as intended: no network, an "
                  "unprivileged user."))
         return {"name": "Grading environment (instructors only)", "score": 0, "max_score": 0,
