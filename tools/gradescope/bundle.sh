@@ -18,7 +18,8 @@ while [ $# -gt 0 ]; do
 done
 zip=$(realpath -m "${zip:-$root/build/gradescope-autograder.zip}")
 cd "$root"
-git rev-parse --is-inside-work-tree >/dev/null 2>&1 ||
+# The workbook itself must be the checkout's top (a copy inside another repository is not one).
+[ "$(git rev-parse --show-toplevel 2>/dev/null)" = "$(pwd -P)" ] ||
   die "$root is not a git checkout: the bundle holds the files git tracks, so it is made from the instructor edition's repository"
 [ -d solutions ] || die "the autograder needs the instructor edition (solutions/ is missing)"
 changed=$(git status --porcelain --untracked-files=no | wc -l)
