@@ -6,25 +6,14 @@ becomes a result of 0 with the reason, the batch goes on, every workspace goes b
 and gradebook.csv and summary.md list every student. The real time-out of a build is held by the
 synthetic class (endless_build in tools/make_submissions.py)."""
 import csv
-import importlib.util
 import json
 import subprocess
 import sys
 import tempfile
 from pathlib import Path
 
-sys.dont_write_bytecode = True  # no __pycache__ in tools/
-ROOT = Path(__file__).resolve().parent.parent.parent
-spec = importlib.util.spec_from_file_location("grade", ROOT / "tools/grade.py")
-grade = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(grade)
-
-problems = []
-
-
-def check(cond, what):
-    if not cond:
-        problems.append(what)
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from grader_test_support import ROOT, check, finish, grade, problems  # noqa: E402
 
 
 def exercise_tests(res):
@@ -139,7 +128,4 @@ with tempfile.TemporaryDirectory(prefix="grader-failures-") as tmp:
     summary = (tmp / "batch/summary.md").read_text()
     check("c_bug: the grader failed on this submission: ValueError" in summary, "3: summary.md does not name c_bug")
 
-for p in problems:
-    print("FAIL:", p)
-print("grader failures: " + ("all recorded as expected" if not problems else f"{len(problems)} problems"))
-sys.exit(1 if problems else 0)
+finish("grader failures", "all recorded as expected")

@@ -9,7 +9,6 @@
   and are reported as ambiguous when it has several;
 - students in a batch get unique names (erin.smith.zip and erin.jones are two students)."""
 import csv
-import importlib.util
 import json
 import re
 import sys
@@ -17,18 +16,8 @@ import tempfile
 import zipfile
 from pathlib import Path
 
-sys.dont_write_bytecode = True  # no __pycache__ in tools/
-ROOT = Path(__file__).resolve().parent.parent.parent
-spec = importlib.util.spec_from_file_location("grade", ROOT / "tools/grade.py")
-grade = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(grade)
-
-problems = []
-
-
-def check(cond, what):
-    if not cond:
-        problems.append(what)
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from grader_test_support import ROOT, check, finish, grade, problems  # noqa: E402
 
 
 # Gradescope's autograder specification, "Output format" (gradescope-autograders.readthedocs.io/en/latest/specs/).
@@ -195,7 +184,4 @@ with tempfile.TemporaryDirectory(prefix="gradescope-results-") as tmp:
     check(sorted(rows) == sorted(names.values()), f"7: gradebook rows {rows}")
     check("no network namespace" in (batch / "summary.md").read_text(), "7: summary.md does not report the isolation")
 
-for p in problems:
-    print("FAIL:", p)
-print("gradescope results: " + ("all as expected" if not problems else f"{len(problems)} problems"))
-sys.exit(1 if problems else 0)
+finish("gradescope results", "all as expected")
