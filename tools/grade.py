@@ -567,6 +567,7 @@ class Grader:
         yet (with the exception as their reason), and the batch goes on."""
         t0 = time.time()
         out_dir.mkdir(parents=True, exist_ok=True)
+        os.chmod(out_dir, 0o700)  # private while it is being written; readable once finished
         self.images = out_dir / "images"
         results = Results(out_dir, name, self.labs, self.sandbox)
         results.vary_seed = self.vary_seed
@@ -582,7 +583,10 @@ class Grader:
             results.problems.append(f"{n} build{'s' if n > 1 else ''} of this submission ran past the build time "
                                     f"limit of {self.build_timeout} s and {'were' if n > 1 else 'was'} stopped: the "
                                     "exercises that could not be built scored 0")
-        return results.finish(time.time() - t0)
+        try:
+            return results.finish(time.time() - t0)
+        finally:
+            os.chmod(out_dir, 0o755)
 
     def grade_into(self, results, submission):
         with tempfile.TemporaryDirectory(prefix="grade-") as scratch:
