@@ -57,19 +57,6 @@ std::string hex(GLint v) {
   return text;
 }
 
-}  // namespace
-
-std::string takeExerciseChunk(const std::string& base, const std::string& donor, const std::string& id) {
-  auto [b0, b1] = chunk(base, id);
-  auto [d0, d1] = chunk(donor, id);
-  // #line keeps compiler messages on the donor's (the student's) line numbers inside the chunk.
-  auto lineAt = [](const std::string& t, size_t pos) { return 1 + std::count(t.begin(), t.begin() + long(pos), '\n'); };
-  return base.substr(0, b0) + "#line " + std::to_string(lineAt(donor, d0)) + "\n" + donor.substr(d0, d1 - d0) +
-         "#line " + std::to_string(lineAt(base, b1)) + "\n" + base.substr(b1);
-}
-
-namespace {
-
 // True when the lab's manifest puts exercise `id` in shaders/`file`.
 bool isGlslExercise(const std::string& file, const std::string& id) {
   try {

@@ -14,10 +14,6 @@
 
 namespace wb {
 
-/// Replaces the chunk of exercise `id` (from its "// EXERCISE NN.k" marker to the next marker) in
-/// `base` with the same chunk from `donor`. Throws wb::Error if either text lacks the marker.
-std::string takeExerciseChunk(const std::string& base, const std::string& donor, const std::string& id);
-
 /// The exercise GLSL this build would run for exercise `id`: this variant's whole file (helpers
 /// above the first marker included), with every other exercise's chunk taken from the solution when
 /// the solution exists (so one mistake is counted once). The whole file as it is when its marker

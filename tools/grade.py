@@ -134,8 +134,18 @@ def unpack(submission, scratch):
     return dest
 
 
-def _regular(p):
-    return p.is_file() and not p.is_symlink()
+def regular_inside(path, folder):
+    """True when `path` is a regular file reached from `folder` without following any link (a linked
+    file or a linked folder on the way could point at the solutions)."""
+    try:
+        current = folder
+        for part in path.relative_to(folder).parts:
+            current = current / part
+            if stat.S_ISLNK(os.lstat(current).st_mode):
+                return False
+        return stat.S_ISREG(os.lstat(path).st_mode)
+    except (ValueError, OSError):
+        return False
 
 
 def find_student_file(folder, lab, rel, assignment_labs=None):
@@ -145,15 +155,18 @@ def find_student_file(folder, lab, rel, assignment_labs=None):
     (exercise.cpp, exercise.glsl or shaders/exercise.glsl at the top of the upload), which belongs to
     the lab only when the assignment (assignment_labs, the names of the labs graded) has one lab;
     with several, a flat file is ambiguous and the note says so."""
+    regular = lambda p: regular_inside(p, folder)  # noqa: E731
     bases = [folder] + sorted(d for d in folder.iterdir() if d.is_dir() and not d.is_symlink())
     for base in bases:
         candidate = base / "labs" / lab / rel
-        if _regular(candidate):
+        if regular(candidate):
             return candidate, None
-    matches = [p for p in folder.rglob(Path(rel).name) if p.as_posix().endswith(f"{lab}/{rel}") and _regular(p)]
+        if os.path.lexists(candidate):  # there, but a link (or not a file): never followed
+            return None, f"labs/{lab}/{rel} is a link or not a regular file: it is not followed (submit the file itself)"
+    matches = [p for p in folder.rglob(Path(rel).name) if p.as_posix().endswith(f"{lab}/{rel}") and regular(p)]
     if len(matches) == 1:
         return matches[0], None
-    flat = next((p for base in bases for p in (base / rel, base / Path(rel).name) if _regular(p)), None)
+    flat = next((p for base in bases for p in (base / rel, base / Path(rel).name) if regular(p)), None)
     if flat is None:
         return None, None
     shown = flat.relative_to(folder).as_posix()
@@ -165,20 +178,6 @@ def find_student_file(folder, lab, rel, assignment_labs=None):
                   f"is not graded from it; upload it as labs/{lab}/{rel}")
 
 
-def regular_inside(path, folder):
-    """True when `path` is a regular file reached from `folder` without following any link."""
-    try:
-        rel = path.relative_to(folder)
-    except ValueError:
-        return False
-    current = folder
-    for part in rel.parts:
-        current = current / part
-        if stat.S_ISLNK(os.lstat(current).st_mode):
-            return False
-    return stat.S_ISREG(os.lstat(path).st_mode)
-
-
 # --- The sandbox ----------------------------------------------------------------------------------
 class Sandbox:
     """Runs a command in its own session with a time limit, without network (a new network
@@ -187,32 +186,33 @@ class Sandbox:
     so two students graded at once cannot touch each other's files)."""
 
     def __init__(self):
-        self.prefix, self.notes = [], []
+        self.notes = []
         self.root = os.geteuid() == 0
-        if self.root and shutil.which("setpriv"):
-            self.prefix = ["setpriv", f"--reuid={NOBODY}", f"--regid={NOBODY}", "--clear-groups", "--"]
-        elif self.root:
+        self.drop = self.root and shutil.which("setpriv") is not None  # run as an unprivileged user
+        if self.root and not self.drop:
             self.notes.append("setpriv is missing: tests run as root")
-        ns = ["unshare", "--net", "--pid", "--fork", "--kill-child", "--mount-proc"]
-        ns += ["--"] if self.root else ["--map-current-user", "--"]
-        if shutil.which("unshare") and subprocess.run(ns + ["true"], capture_output=True).returncode == 0:
-            self.prefix = ns + self.prefix
-        else:
+        self.ns = ["unshare", "--net", "--pid", "--fork", "--kill-child", "--mount-proc"]
+        self.ns += ["--"] if self.root else ["--map-current-user", "--"]
+        if not shutil.which("unshare") or subprocess.run(self.ns + ["true"], capture_output=True).returncode != 0:
+            self.ns = []
             self.notes.append("network and PID namespaces are not available here (unshare failed): tests run "
                               "with the network, and a process a submission leaves behind is killed by session "
                               "only")
-        if self.root and "setpriv" in self.prefix and subprocess.run(
-                self.prefix + ["test", "-r", str(ROOT / "CMakeLists.txt")], capture_output=True).returncode != 0:
-            self.prefix = self.prefix[:self.prefix.index("setpriv")]
+        if self.drop and subprocess.run(self.prefix(NOBODY) + ["test", "-r", str(ROOT / "CMakeLists.txt")],
+                                        capture_output=True).returncode != 0:
+            self.drop = False
             self.notes.append(f"the user nobody cannot read {ROOT}: tests run as root (make the path "
                               "world-readable to drop privileges)")
-        self.user = f"a user of their own (uid {SANDBOX_UID} and up)" if "setpriv" in self.prefix else "the grader's user"
+        self.user = f"a user of their own (uid {SANDBOX_UID} and up)" if self.drop else "the grader's user"
+
+    def prefix(self, uid):
+        """The command prefix that runs a command in the namespaces, as `uid` when privileges drop."""
+        drop = ["setpriv", f"--reuid={uid}", f"--regid={uid}", "--clear-groups", "--"] if self.drop else []
+        return self.ns + drop
 
     def run(self, cmd, timeout, cwd=None, env=None, uid=NOBODY):
         """(exit code or -signal, output, timed_out), as `uid` when the sandbox drops privileges."""
-        prefix = [f"--reuid={uid}" if a.startswith("--reuid=") else f"--regid={uid}" if a.startswith("--regid=")
-                  else a for a in self.prefix]
-        return run_killable(prefix + cmd, timeout, cwd=cwd, env=env)
+        return run_killable(self.prefix(uid) + cmd, timeout, cwd=cwd, env=env)
 
 
 def run_killable(cmd, timeout, cwd=None, env=None):
@@ -604,14 +604,8 @@ class Grader:
                     found, note = find_student_file(folder, lab["name"], rel, [l["name"] for l in self.labs])
                     if note:
                         notes.append(note)
-                    linked = [b / "labs" / lab["name"] / rel for b in [folder] + [d for d in folder.iterdir()]]
-                    if found is None and any(p.is_symlink() for p in linked):
-                        found = next(p for p in linked if p.is_symlink())  # said below, never followed
                     if found is None:
                         notes.append(f"labs/{lab['name']}/{rel} is not in the submission: the stub is graded")
-                    elif not regular_inside(found, folder):
-                        notes.append(f"labs/{lab['name']}/{rel} is a link or not a regular file: it is not "
-                                     "followed, and the stub is graded (submit the file itself)")
                     elif found.stat().st_size > MAX_FILE_BYTES:
                         notes.append(f"labs/{lab['name']}/{rel} is over 1 MiB: the stub is graded")
                     else:

@@ -102,6 +102,21 @@ static std::vector<std::string> varyArgs() {
   return varySeed() >= 0 ? std::vector<std::string>{"--vary", std::to_string(varySeed())} : std::vector<std::string>{};
 }
 
+// Runs `exe --headless args` (plus the variation, if any) from `out` with a time limit, its output
+// in `log`: the exit status and the command. From its output folder, so nothing it writes lands
+// where the tests were started.
+static std::pair<int, std::string> runApp(const fs::path& out, const std::string& env, const std::string& exe,
+                                          const std::vector<std::string>& args, const fs::path& log) {
+  std::string cmd = "cd " + quote(out.string()) + " && " + env + "timeout 120 " + quote(exe) + " --headless";
+  for (const auto& a : args) cmd += " " + quote(a);
+  for (const auto& a : varyArgs()) cmd += " " + quote(a);
+  const int status = std::system((cmd + " >" + quote(log.string()) + " 2>&1").c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : 128, cmd};
+}
+
+// The app a judge trusts: the solution's (this build's in the student edition, which has none).
+static std::string trustedExe() { return variant::kSolutionExe[0] ? variant::kSolutionExe : variant::kLabExe; }
+
 // Runs the lab headless for exercise `id` with GLSL isolation (the exercise's own chunk from this
 // build, everything else from the solution: a GLSL exercise then runs in the solution's app, so C++
 // stubs cannot block it, and a C++ exercise runs in this build's app with the solution's GLSL).
@@ -118,15 +133,13 @@ static nlohmann::json runLabProcess(const std::string& id, const fs::path& out, 
     env += "WB_SHADER_OVERLAY=" + quote(out.string()) + " ";
   }
   const fs::path log = out / "lab.log";
-  // From its output folder, so nothing it writes lands where the tests were started.
-  std::string cmd = "cd " + quote(out.string()) + " && " + env + "timeout 120 " + quote(exe) + " --headless";
-  for (const auto& a : args) cmd += " " + quote(a);
-  for (const auto& a : extra) cmd += " " + quote(a);
-  const int status = std::system((cmd + " >" + quote(log.string()) + " 2>&1").c_str());
+  std::vector<std::string> all = args;
+  all.insert(all.end(), extra.begin(), extra.end());
+  const auto [code, cmd] = runApp(out, env, exe, all, log);
   // The log is the student's process's output: only its start and end are kept (and recorded).
   std::string text = readFile(log);
   if (text.size() > 40000) text = text.substr(0, 20000) + "\n[...]\n" + text.substr(text.size() - 20000);
-  return {{"code", WIFEXITED(status) ? WEXITSTATUS(status) : 128}, {"log", text}, {"command", cmd}};
+  return {{"code", code}, {"log", text}, {"command", cmd}};
 }
 
 // Runs the lab for exercise `id` (see runLabProcess) as an observation: a runner records its exit
@@ -141,9 +154,7 @@ static ::testing::AssertionResult runIsolated(const std::string& id, const fs::p
   const std::string key = nextObservationKey();
   nlohmann::json run;
   try {
-    std::vector<std::string> extra = {"--record", record.string()};
-    for (const auto& a : varyArgs()) extra.push_back(a);
-    run = observeJson(key, [&] { return runLabProcess(id, out, args, extra); });
+    run = observeJson(key, [&] { return runLabProcess(id, out, args, {"--record", record.string()}); });
     observeFile(key + ".record", record);
     observeFile(key + ".visibility", out / "result.pfm");
   } catch (const std::exception& e) {
@@ -184,13 +195,10 @@ static ::testing::AssertionResult runIsolated(const std::string& id, const fs::p
 // student's process.
 static ::testing::AssertionResult judgeMeasurement(const fs::path& out, const std::vector<std::string>& args,
                                                    RunResult& run) {
-  const fs::path record = out / "judge.json", log = out / "judge.log";
-  const std::string exe = variant::kSolutionExe[0] ? variant::kSolutionExe : variant::kLabExe;
-  std::string cmd = "cd " + quote(out.string()) + " && timeout 120 " + quote(exe) + " --headless --record " +
-                    quote(record.string()) + " --measure-visibility " + quote((out / "result.pfm").string());
-  for (const auto& a : args) cmd += " " + quote(a);
-  for (const auto& a : varyArgs()) cmd += " " + quote(a);
-  const int status = std::system((cmd + " >" + quote(log.string()) + " 2>&1").c_str());
+  const fs::path record = out / "judge.json";
+  std::vector<std::string> all = {"--record", record.string(), "--measure-visibility", (out / "result.pfm").string()};
+  all.insert(all.end(), args.begin(), args.end());
+  const int status = runApp(out, "", trustedExe(), all, out / "judge.log").first;
   try {
     run = readRunRecord(record);
   } catch (const std::exception& e) {
@@ -211,13 +219,15 @@ std::string runLabOutput(const std::string& id, const std::string& name, const s
 
 SceneMetrics measureScene(const std::string& id, const std::string& name, const std::vector<std::string>& args) {
   const fs::path out = fs::path(variant::kOutputDir) / ("Ex" + id + "_" + name);
-  std::vector<std::string> all = {"--size", "480x270", "--metrics", "--dump-visibility", (out / "result.pfm").string()};
-  all.insert(all.end(), args.begin(), args.end());
+  std::vector<std::string> scene = {"--size", "480x270", "--metrics"};
+  scene.insert(scene.end(), args.begin(), args.end());
+  std::vector<std::string> all = {"--dump-visibility", (out / "result.pfm").string()};  // what a judge measures
+  all.insert(all.end(), scene.begin(), scene.end());
   std::string log;
   SceneMetrics m;
   RunResult run;
   auto ok = runIsolated(id, out, all, log, &run);
-  if (ok && tapeMode() == TapeMode::Replay) ok = judgeMeasurement(out, all, run);
+  if (ok && tapeMode() == TapeMode::Replay) ok = judgeMeasurement(out, scene, run);
   if (!ok) {
     m.failure = ok.message();
     return m;
@@ -261,14 +271,10 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
   FloatImage ref;
   if (varySeed() >= 0) {  // the trusted app's render of the same variation
     const fs::path refPfm = out / "reference_varied.pfm";
-    const std::string exe = variant::kSolutionExe[0] ? variant::kSolutionExe : variant::kLabExe;
-    std::string cmd = "cd " + quote(out.string()) + " && timeout 120 " + quote(exe) +
-                      " --headless --size 256x256 --dump-visibility " + quote(refPfm.string());
-    for (const auto& a : args) cmd += " " + quote(a);
-    for (const auto& a : varyArgs()) cmd += " " + quote(a);
+    std::vector<std::string> all = {"--size", "256x256", "--dump-visibility", refPfm.string()};
+    all.insert(all.end(), args.begin(), args.end());
     fs::remove(refPfm);
-    if (std::system((cmd + " >" + quote((out / "reference.log").string()) + " 2>&1").c_str()) != 0 ||
-        !fs::exists(refPfm))
+    if (runApp(out, "", trustedExe(), all, out / "reference.log").first != 0 || !fs::exists(refPfm))
       FAIL() << "ERROR: the reference render of the varied scene failed (a fault of the grader):\n"
              << readFile(out / "reference.log");
     ref = readPfm(refPfm);
