@@ -2,10 +2,9 @@
 # and the mutants that test the tests. Nothing here is specific to one lab.
 set(WB_WARNINGS -Wall -Wextra)
 option(WB_EXPECT_STUBS "Student tests pass only when they report NOT IMPLEMENTED (the state of the repo)" OFF)
-# The grader's build (tools/grade.py) sets WB_GRADE_DIR to a folder laid out like the repository
-# that holds one submission's exercise files (labs/NN_name/exercise.cpp, .../shaders/exercise.glsl):
-# each lab then also gets labNN_submission and labNN_submission_tests, built from those files.
-set(WB_GRADE_DIR "" CACHE PATH "a submission's exercise files, for tools/grade.py")
+# The grader's runner tree (tools/grade.py) turns this off: registering tests with ctest runs each
+# test binary after it is linked (gtest_discover_tests), which would run a student's code in the build.
+option(WB_REGISTER_TESTS "Register the lab tests with ctest" ON)
 
 # One build of a lab from one set of exercise files: labNN<suffix> and labNN<suffix>_tests.
 function(_wb_lab_variant lab nn variant suffix exercise_dir)
@@ -67,6 +66,9 @@ function(_wb_label_tests list labels)
 endfunction()
 
 function(_wb_register_tests lab nn variant target ids)
+  if(NOT WB_REGISTER_TESTS)
+    return()
+  endif()
   gtest_discover_tests(${target} TEST_PREFIX "${variant}." TEST_FILTER "Manifest*" TEST_LIST ${target}_manifest
                        PROPERTIES TIMEOUT 120 DISCOVERY_TIMEOUT 30)
   _wb_label_tests(${target}_manifest "lab${nn};${variant}")
@@ -182,9 +184,6 @@ function(add_lab lab)
 
   _wb_lab_variant(${lab} ${nn} student "" ${lab_dir})
   _wb_register_tests(${lab} ${nn} student lab${nn}_tests "${ids}")
-  if(WB_GRADE_DIR)  # built and run only by the grader, never registered with ctest
-    _wb_lab_variant(${lab} ${nn} submission "_submission" ${WB_GRADE_DIR}/labs/${lab})
-  endif()
   if(EXISTS ${PROJECT_SOURCE_DIR}/solutions/${lab})
     _wb_lab_variant(${lab} ${nn} solution "_solution" ${PROJECT_SOURCE_DIR}/solutions/${lab})
     _wb_register_tests(${lab} ${nn} solution lab${nn}_solution_tests "${ids}")

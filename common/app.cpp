@@ -87,6 +87,8 @@ int App::main(int argc, char** argv, std::unique_ptr<Lab> lab) {
       return 0;
     }
     loadScene(*lab, options);
+    if (!options.recordExercises.empty()) lab->exerciseTape_.startRecording(options.recordExercises);
+    if (!options.replayExercises.empty()) lab->exerciseTape_.startReplay(options.replayExercises);
     const std::string number = lab->board().number();
     if (options.headless && options.screenshot.empty() && options.visibility.empty() && options.bench.empty() &&
         !options.metrics && options.record.empty() && options.sweeps.empty())
@@ -297,10 +299,8 @@ MeasureResult App::measureNow(bool report) {
   const Light& sceneLight = lab.lightShown_ ? lab.light_.light : lab.scene.lights[size_t(lab.lightIndex)];
   CompareChoice split = shell_.compare;
   split.on = split.on && !split.key.empty();
-  std::optional<FloatImage> given;  // --measure-visibility: a buffer drawn elsewhere, measured here
-  if (!options_.measureVisibility.empty()) given = readPfm(options_.measureVisibility);
-  const MeasureResult r = measurement_.measure(
-      {target_, lab.scene, lab.alphaCutoff_, lab.light_, sceneLight, split, sides_, given ? &*given : nullptr});
+  const MeasureResult r =
+      measurement_.measure({target_, lab.scene, lab.alphaCutoff_, lab.light_, sceneLight, split, sides_});
   shell_.measured = r.text;
   lastMeasure_ = r;
   if (!report) return r;
@@ -330,6 +330,7 @@ int App::sweep() {
 }
 
 void App::finish(RunRecord& record) {
+  lab_->exerciseTape_.save();
   if (options_.metrics && !imgui_) measureNow(true);
   const glm::ivec2 size = target_.size();
   if (!options_.screenshot.empty() && !imgui_) {  // (a window writes its own, with the UI)

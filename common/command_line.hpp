@@ -31,7 +31,8 @@ struct Options {
   std::string bench;              ///< --bench F.csv
   std::string heatmap;            ///< --heatmap F.png (implies --metrics)
   std::string record;             ///< --record F.json: the machine-readable result of the run
-  std::string measureVisibility;  ///< --measure-visibility F.pfm: measure this buffer, not the frame's
+  std::string recordExercises;    ///< --record-exercises F.json: what the C++ exercises returned
+  std::string replayExercises;    ///< --replay-exercises F.json: use those results instead
   long long vary = -1;            ///< --vary SEED: perturb the scene's lights and cameras (-1: no)
   std::string sweepCsv;           ///< --sweep-csv F.csv
   glm::ivec2 size{960, 540};      ///< --size WxH

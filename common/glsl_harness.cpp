@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -57,17 +58,6 @@ std::string hex(GLint v) {
   return text;
 }
 
-// True when the lab's manifest puts exercise `id` in shaders/`file`.
-bool isGlslExercise(const std::string& file, const std::string& id) {
-  try {
-    const auto manifest = nlohmann::json::parse(readFile(fs::path(variant::kLabDir) / "exercises.json"));
-    for (const auto& e : manifest.at("exercises"))
-      if (e.at("id").get<std::string>() == id) return e.at("file").get<std::string>() == "shaders/" + file;
-  } catch (const std::exception&) {
-  }
-  return false;
-}
-
 // `mine` with every exercise chunk except `keep`'s that the solution also has swapped for the
 // solution's; the preamble (helpers above the first marker) stays the student's. #line keeps the
 // compiler's messages on the student's line numbers.
@@ -95,8 +85,24 @@ std::string keepOnlyChunk(const std::string& mine, const std::string& solution, 
 
 }  // namespace
 
+bool isGlslExercise(const std::string& file, const std::string& id) {
+  try {
+    const auto manifest = nlohmann::json::parse(readFile(fs::path(variant::kLabDir) / "exercises.json"));
+    for (const auto& e : manifest.at("exercises"))
+      if (e.at("id").get<std::string>() == id) return e.at("file").get<std::string>() == "shaders/" + file;
+  } catch (const std::exception&) {
+  }
+  return false;
+}
+
+fs::path submittedShaderFile(const std::string& file) {
+  const char* dir = std::getenv("WB_SUBMISSION_DIR");
+  if (dir && *dir) return fs::path(dir) / "shaders" / file;
+  return findShaderFile(file, shaderSearchPath());
+}
+
 std::string isolatedExerciseSource(const std::string& file, const std::string& id) {
-  const std::string mine = readFile(findShaderFile(file, shaderSearchPath()));
+  const std::string mine = readFile(submittedShaderFile(file));
   const fs::path solution = fs::path(variant::kSolutionDir) / "shaders" / file;
   if (*variant::kSolutionDir == '\0' || !fs::exists(solution)) return mine;
   // A C++ exercise has no chunk here: its GLSL is all solution, so a GLSL stub never blocks it.

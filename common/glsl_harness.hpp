@@ -21,6 +21,12 @@ namespace wb {
 /// solution when `id` is a C++ exercise (so a GLSL stub never blocks it).
 /// `file` is the name on the shader search path, e.g. "exercise.glsl".
 std::string isolatedExerciseSource(const std::string& file, const std::string& id);
+/// The student's shader `file`: from the submission being graded when WB_SUBMISSION_DIR names one
+/// (a judge, which was built with the solution, reads the student's GLSL there), else found on the
+/// shader search path.
+std::filesystem::path submittedShaderFile(const std::string& file);
+/// True when the lab's manifest puts exercise `id` in shaders/`file`.
+bool isGlslExercise(const std::string& file, const std::string& id);
 
 /// The GLSL sampler types a kernel texture can be declared as.
 enum class SamplerType {

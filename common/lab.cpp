@@ -43,6 +43,31 @@ Program& Lab::loadProgram(std::vector<ShaderStage> stages, std::string defines) 
   return programs_.back();
 }
 
+bool Lab::runExercise(const std::string& id, const std::function<nlohmann::json()>& call,
+                      const std::function<void(const nlohmann::json&)>& replay) {
+  ExerciseTape::Call c;
+  if (exerciseTape_.replays(id)) {  // the grader's trusted app, drawing with a student's results
+    c = exerciseTape_.next(id);
+    try {
+      if (c.state == ExerciseState::Implemented) replay(c.value);
+    } catch (const std::exception& e) {
+      c = {ExerciseState::Failed, std::string("the recorded result cannot be used: ") + e.what(), {}};
+    }
+  } else {
+    try {
+      c.value = call();
+      c.state = ExerciseState::Implemented;
+    } catch (const NotImplemented& e) {
+      c.state = ExerciseState::NotImplemented, c.message = e.what();
+    } catch (const std::exception& e) {
+      c.state = ExerciseState::Failed, c.message = e.what();
+    }
+    if (exerciseTape_.recording()) exerciseTape_.add(id, c);
+  }
+  setStatus(id, c.state, c.message);
+  return c.state == ExerciseState::Implemented;
+}
+
 void Lab::warn(const std::string& message) {
   if (std::find(warnings_.begin(), warnings_.end(), message) != warnings_.end()) return;
   warnings_.push_back(message);

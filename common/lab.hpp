@@ -8,6 +8,7 @@
 #include "common/debug_views.hpp"
 #include "common/error.hpp"
 #include "common/exercise_board.hpp"
+#include "common/exercise_tape.hpp"
 #include "common/frame_target.hpp"
 #include "common/gl.hpp"
 #include "common/gpu_timers.hpp"
@@ -17,9 +18,11 @@
 #include "common/settings.hpp"
 #include "common/shader.hpp"
 #include "common/shadow_map.hpp"
+#include "common/value_codec.hpp"
 
 #include <glm/glm.hpp>
 
+#include <functional>
 #include <list>
 #include <memory>
 #include <string>
@@ -74,16 +77,22 @@ class Lab {
   /// Runs a C++ exercise call, recording Implemented / NotImplemented / Failed; true on success.
   template <class F>
   bool attempt(const std::string& id, F&& call) {
-    try {
-      call();
-      setStatus(id, ExerciseState::Implemented, "");
-      return true;
-    } catch (const NotImplemented& e) {
-      setStatus(id, ExerciseState::NotImplemented, e.what());
-    } catch (const std::exception& e) {
-      setStatus(id, ExerciseState::Failed, e.what());
-    }
-    return false;
+    return runExercise(
+        id, [&] { return call(), nlohmann::json(); }, [](const nlohmann::json&) {});
+  }
+  /// Runs a C++ exercise that produces a value: `out = call()`. When the grader replays a
+  /// student's run (ExerciseTape), `out` is the student's recorded value instead.
+  template <class T, class F>
+  bool attempt(const std::string& id, T& out, F&& call) {
+    return runExercise(
+        id, [&] { return out = call(), encode(out); }, [&](const nlohmann::json& v) { out = decode<T>(v); });
+  }
+  /// Runs a C++ exercise that sets the depth pass's rasterizer state (polygon offset, culling);
+  /// a replay sets the state the student's call left.
+  template <class F>
+  bool attemptRasterState(const std::string& id, F&& call) {
+    return runExercise(
+        id, [&] { return call(), captureRasterState(); }, applyRasterState);
   }
   /// Records an exercise's state (shown in the info panel, printed and recorded by headless runs).
   void setStatus(const std::string& id, ExerciseState state, const std::string& message) {
@@ -148,8 +157,11 @@ class Lab {
 
  private:
   friend class App;  // the host: it loads the scene, calls the hooks and reads the shared state
+  bool runExercise(const std::string& id, const std::function<nlohmann::json()>& call,
+                   const std::function<void(const nlohmann::json&)>& replay);
   std::string defaultScene_;
   ExerciseBoard board_;
+  ExerciseTape exerciseTape_;      // --record-exercises / --replay-exercises
   FrameTarget* target_ = nullptr;  // the host's, while hosted
   GpuTimers* timers_ = nullptr;
   LightView light_;

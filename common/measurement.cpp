@@ -87,7 +87,7 @@ std::string Measurement::halves(const MeasureInput& in, const FloatImage& render
 MeasureResult Measurement::measure(const MeasureInput& in) {
   const auto t0 = std::chrono::steady_clock::now();
   const int w = in.target.size().x, h = in.target.size().y;
-  const FloatImage rendered = in.visibility ? *in.visibility : in.target.readVisibility();
+  const FloatImage rendered = in.target.readVisibility();
   if (rendered.width != w || rendered.height != h)
     throw UsageError("the visibility to measure is " + std::to_string(rendered.width) + "x" +
                      std::to_string(rendered.height) + " but the frame is " + std::to_string(w) + "x" +

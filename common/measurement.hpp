@@ -34,14 +34,13 @@ struct MeasureResult {
 
 /// The state one frame is measured in.
 struct MeasureInput {
-  const FrameTarget& target;               ///< the frame, with visibility and positions
-  const Scene& scene;                      ///< the scene the rays are cast against
-  float alphaCutoff;                       ///< the alpha test the renderer used
-  const LightView& light;                  ///< the light and map of the (right half of the) frame
-  const Light& sceneLight;                 ///< the light to use when the lab showed none
-  const CompareChoice& split;              ///< split screen, if on
-  const LightView* sides;                  ///< in split screen: the left and right halves' lights (two)
-  const FloatImage* visibility = nullptr;  ///< measure this instead of the frame's visibility (same size)
+  const FrameTarget& target;   ///< the frame, with visibility and positions
+  const Scene& scene;          ///< the scene the rays are cast against
+  float alphaCutoff;           ///< the alpha test the renderer used
+  const LightView& light;      ///< the light and map of the (right half of the) frame
+  const Light& sceneLight;     ///< the light to use when the lab showed none
+  const CompareChoice& split;  ///< split screen, if on
+  const LightView* sides;      ///< in split screen: the left and right halves' lights (two)
 };
 
 /// Measures frames; keeps the ray-cast scene and the PCF reference between calls.

@@ -8,8 +8,7 @@
 # --verify DIR proves that an exported folder holds no solution content and no instructor file (see
 # the rule below), and exits 1 naming each leak.
 set -euo pipefail
-INSTRUCTOR=(solutions tests/mutants tests/hidden tests/grading docs/instructors.md docs/gradescope.md
-            tools/grade.py tools/gradescope tools/make_submissions.py tools/export_student.sh tools/student_README.md)
+mapfile -t INSTRUCTOR < <(grep -v '^#' "$(dirname "$0")/instructor_paths.txt" | grep .)
 verify=0
 if [ "${1:-}" = "--verify" ]; then verify=1; shift; fi
 [ $# -eq 1 ] || { echo "usage: $0 [--verify] DIR" >&2; exit 2; }

@@ -2,13 +2,14 @@
 """Grades student submissions of the Shadow Lab Workbook: ./workbook grade (see docs/instructors.md).
 
 A submission is a folder or an archive (.zip, .tar, .tar.gz, .tgz) holding a student's copy of the
-workbook, or just its labs/ folder, or (when one lab is graded) just the exercise files, flat. Only the exercise files that labs/*/exercises.json names are
-taken from it; they are laid over this (instructor) tree in a grading build that has the framework
-prebuilt, so a submission costs one compile per lab. Each exercise's tests run in their own process
-with a time limit, without network, and as an unprivileged user when the grader runs as root. A
-build that runs past --build-timeout is stopped and costs the exercises it was building; whatever
-else goes wrong with one submission (even a fault of the grader) is recorded in its results, never
-stops a batch.
+workbook, or just its labs/ folder, or (when one lab is graded) just the exercise files, flat. Only
+the exercise files that labs/*/exercises.json names are taken from it. They go into a copy of this
+tree without the instructor material, prebuilt, where an unprivileged user compiles them (one
+compile per lab) and another runs them as the *runner*, without network, recording what the
+exercises produce; the solution's build, the *judge*, decides every score from that record and draws
+every graded scene itself (docs/grading-trust.md). A build that runs past --build-timeout is stopped
+and costs the exercises it was building; whatever else goes wrong with one submission (even a fault
+of the grader) is recorded in its results, never stops a batch.
 
 Outputs per submission (in --out): results.json (Gradescope, rewritten after every exercise so a
 crash mid-way leaves a valid file), junit.xml, report.md and report.html with the reference, result
@@ -16,6 +17,7 @@ and diff images of failed scene tests. With --batch: one such folder per student
 summary.md.
 """
 import argparse
+import atexit
 import concurrent.futures
 import csv
 import html
@@ -40,6 +42,7 @@ from xml.sax.saxutils import escape, quoteattr
 ROOT = Path(__file__).resolve().parent.parent
 NOBODY = 65534
 SANDBOX_UID = 61000  # grading tree k runs student code as uid 61000 + k (when the grader is root)
+BUILDER_UID = 61500  # and compiles it as uid 61500 + k
 MAX_TAPE_BYTES = 64 << 20  # what a judge reads of a runner's tape at most
 MAX_FILE_BYTES = 1 << 20  # a larger "exercise file" is not source code
 
@@ -198,11 +201,11 @@ class Sandbox:
             self.notes.append("network and PID namespaces are not available here (unshare failed): tests run "
                               "with the network, and a process a submission leaves behind is killed by session "
                               "only")
-        if self.drop and subprocess.run(self.prefix(NOBODY) + ["test", "-r", str(ROOT / "CMakeLists.txt")],
+        if self.drop and subprocess.run(self.prefix(NOBODY) + ["test", "-x", str(ROOT)],
                                         capture_output=True).returncode != 0:
             self.drop = False
-            self.notes.append(f"the user nobody cannot read {ROOT}: tests run as root (make the path "
-                              "world-readable to drop privileges)")
+            self.notes.append(f"the user nobody cannot enter {ROOT}: tests run as root (make every folder on "
+                              "the way to it world-enterable to drop privileges)")
         self.user = f"a user of their own (uid {SANDBOX_UID} and up)" if self.drop else "the grader's user"
 
     def prefix(self, uid):
@@ -213,6 +216,12 @@ class Sandbox:
     def run(self, cmd, timeout, cwd=None, env=None, uid=NOBODY):
         """(exit code or -signal, output, timed_out), as `uid` when the sandbox drops privileges."""
         return run_killable(self.prefix(uid) + cmd, timeout, cwd=cwd, env=env)
+
+    def checked(self, cmd, uid, env, what):
+        """Runs a step of the grader's own (a build) as `uid`; stops the grader when it fails."""
+        code, out, timed_out = self.run(cmd, 3600, env=env, uid=uid)
+        if code != 0 or timed_out:
+            raise SystemExit(f"grade: could not {what}:\n{out[-4000:]}")
 
 
 def run_killable(cmd, timeout, cwd=None, env=None):
@@ -248,15 +257,65 @@ def kill_session(sid):
 
 
 # --- The grading build ----------------------------------------------------------------------------
+def instructor_paths():
+    """What the student edition leaves out (tools/instructor_paths.txt), relative to ROOT."""
+    lines = (ROOT / "tools/instructor_paths.txt").read_text().splitlines()
+    return [l.strip() for l in lines if l.strip() and not l.startswith("#")]
+
+
+def edition_ignore(root_dir):
+    """A copytree ignore: the instructor material, git, build folders and caches of the checkout."""
+    left_out = {ROOT / p for p in instructor_paths()}
+
+    def ignore(folder, names):
+        here = Path(folder)
+        return {n for n in names if here / n in left_out or n in (".git", "__pycache__", "node_modules")
+                or (here == root_dir and (n.startswith("build") or n == "grades"))}
+    return ignore
+
+
+def sync_tree(src, dest, ignore):
+    """Makes dest a copy of src (less what ignore leaves out), writing only the files whose content
+    differs, so an unchanged tree is not rebuilt."""
+    dest.mkdir(parents=True, exist_ok=True)
+    names = set(os.listdir(src)) - ignore(str(src), os.listdir(src))
+    for stale in set(os.listdir(dest)) - names:
+        p = dest / stale
+        shutil.rmtree(p) if p.is_dir() and not p.is_symlink() else p.unlink()
+    for n in names:
+        s, d = src / n, dest / n
+        if s.is_symlink() or not (s.is_dir() or s.is_file()):
+            continue
+        if s.is_dir():
+            sync_tree(s, d, ignore)
+            continue
+        st = s.stat()
+        if not d.is_file() or d.stat().st_size != st.st_size or d.read_bytes() != s.read_bytes():
+            shutil.copyfile(s, d)  # a new time: make rebuilds what depends on it
+        os.chmod(d, 0o644 | (st.st_mode & 0o111))
+
+
 class Workspace:
-    """One prebuilt grading tree: build-grade/wK with the submission's files in build-grade/wK/submission."""
+    """One pair of prebuilt grading trees:
+    - the runner's, build-grade/wK: src/ is the student edition of this checkout (no solutions, no
+      held-out tests, no mutants, no grader) with one submission's exercise files in labs/, built in
+      build/ by the builder user (uid 61500 + k) into labNN and labNN_tests; the runner user
+      (uid 61000 + k) runs them and writes only its tapes and test-output/;
+    - the judge's, build-grade/judge/wK (root's alone): this checkout's solution build, labNN_solution
+      and labNN_solution_tests, which judge the tapes and draw every scene (docs/grading-trust.md)."""
 
     def __init__(self, index, labs, base):
-        self.uid = SANDBOX_UID + index  # this tree's runners' user (when the grader is root)
+        self.uid = SANDBOX_UID + index  # runs the student's code (when the grader is root)
+        self.builder = BUILDER_UID + index  # compiles it
         self.dir = base / f"w{index}"
-        self.submission = self.dir / "submission"
+        self.src = self.dir / "src"
         self.build = self.dir / "build"
+        self.judge = base / "judge" / f"w{index}"
+        self.stubs = self.dir / "stubs"  # the public stub shaders, for the runner's recording runs
         self.labs = labs
+
+    def lab_dir(self, lab):
+        return self.src / "labs" / lab
 
     def reset_to_stubs(self):
         for lab in load_labs():  # every lab, so the build is configured the same whatever --labs says
@@ -265,46 +324,72 @@ class Workspace:
 
     def place(self, lab, rel, content):
         """Writes a file only when its content changes, so make rebuilds only what changed."""
-        target = self.submission / "labs" / lab / rel
+        target = self.lab_dir(lab) / rel
         if target.exists() and target.read_bytes() == content:
             return
         target.parent.mkdir(parents=True, exist_ok=True)
         target.write_bytes(content)
+
+    def show_sources(self, readable):
+        """The C++ exercise files are readable while the builder compiles them, and root's alone while
+        the runner runs: a file graded in isolation holds the solution's code of other exercises."""
+        for f in self.src.glob("labs/*/exercise.cpp"):
+            os.chmod(f, 0o644 if readable else 0o600)
 
     def after_killed_build(self, labs):
         """A build killed mid-way may leave a half-written object or executable that is newer than its
         sources, which make would take as up to date: the executables go and the exercise files are
         touched, so the next build of these labs redoes both."""
         for lab in labs:
-            for name in (f"lab{lab['nn']}_submission", f"lab{lab['nn']}_submission_tests"):
+            for name in (f"lab{lab['nn']}", f"lab{lab['nn']}_tests"):
                 (self.build / name).unlink(missing_ok=True)
             for rel in student_files(lab):
-                target = self.submission / "labs" / lab["name"] / rel
+                target = self.lab_dir(lab["name"]) / rel
                 if target.exists():
                     target.touch()
 
-    def prepare(self, jobs):
-        """Configures and builds the framework, the solution apps and the submission variant (stubs)."""
-        self.reset_to_stubs()
+    def runner_targets(self, labs):
+        return [t for lab in labs for t in (f"lab{lab['nn']}", f"lab{lab['nn']}_tests")]
+
+    def prepare(self, jobs, sandbox):
+        """Builds the judge's tree (root) and the runner's (the builder user, stubs in place)."""
         t0 = time.time()
+        for p in (self.dir.parent, self.dir):
+            p.mkdir(parents=True, exist_ok=True)
+            os.chmod(p, 0o755)
+        self.judge.mkdir(parents=True, exist_ok=True)
+        os.chmod(self.judge.parent, 0o700)
+        sync_tree(ROOT, self.src, edition_ignore(ROOT))
+        sync_tree(ROOT / "labs", self.stubs, lambda folder, names: {n for n in names if Path(folder, n).is_file()
+                                                                    and n != "exercise.glsl"})
+        self.reset_to_stubs()
+        if not (self.judge / "CMakeCache.txt").exists():
+            run_checked(["cmake", "-S", str(ROOT), "-B", str(self.judge), "-DCMAKE_BUILD_TYPE=RelWithDebInfo"],
+                        "configure the judge's build")
+        targets = [t for lab in self.labs for t in (f"lab{lab['nn']}_solution", f"lab{lab['nn']}_solution_tests")]
+        run_checked(["cmake", "--build", str(self.judge), "-j", str(jobs), "--target"] + targets,
+                    "build the judge's build")
+        cache = self.build / "CMakeCache.txt"
+        if cache.exists() and (f"CMAKE_HOME_DIRECTORY:INTERNAL={self.src}\n" not in cache.read_text()
+                               or "WB_REGISTER_TESTS:BOOL=OFF" not in cache.read_text()):
+            shutil.rmtree(self.build)  # a build of another source tree (an older grader's)
+        own(self.build, self.builder, 0o755)
+        env = dict(os.environ, HOME="/tmp")
         if not (self.build / "CMakeCache.txt").exists():
-            run_checked(["cmake", "-S", str(ROOT), "-B", str(self.build), "-DCMAKE_BUILD_TYPE=RelWithDebInfo",
-                         f"-DWB_GRADE_DIR={self.submission}"], "configure the grading build")
-        targets = []
-        for lab in self.labs:
-            nn = lab["nn"]
-            targets += [f"lab{nn}_solution", f"lab{nn}_solution_tests", f"lab{nn}_submission", f"lab{nn}_submission_tests"]
-        run_checked(["cmake", "--build", str(self.build), "-j", str(jobs), "--target"] + targets,
-                    "build the grading framework")
-        self.make_readable()
+            sandbox.checked(["cmake", "-S", str(self.src), "-B", str(self.build), "-DCMAKE_BUILD_TYPE=RelWithDebInfo",
+                             "-DWB_REGISTER_TESTS=OFF"],  # (discovery would run the student's code in the build)
+                            self.builder, env, "configure the runner's build (as the builder user)")
+        self.show_sources(True)
+        sandbox.checked(["cmake", "--build", str(self.build), "-j", str(jobs), "--target"] + self.runner_targets(self.labs),
+                        self.builder, env, "build the runner's build (as the builder user)")
+        self.show_sources(False)
+        self.fresh_outputs()
         return time.time() - t0
 
-    def make_readable(self):
-        """The runners run as this tree's own user: they read the build and write test-output/ and
-        their tapes, which no other tree's user can enter (0700)."""
-        for p in (self.dir.parent, self.dir, self.build):
-            os.chmod(p, 0o755)
+    def fresh_outputs(self):
+        """Empties the runner's folders, so nothing one submission's code left there meets the next."""
         for name in ("test-output", "tapes"):
+            shutil.rmtree(self.build / name, ignore_errors=True)
             own(self.build / name, self.uid)
 
     def fresh_tape(self, tag):
@@ -315,8 +400,9 @@ class Workspace:
         return tape
 
 
-def own(folder, uid):
-    """Creates `folder` (if needed) and gives it, and what is in it, to `uid` alone (when root)."""
+def own(folder, uid, mode=0o700):
+    """Creates `folder` (if needed) and gives it, and what is in it, to `uid` (when root), the folder
+    itself with `mode` (the user's alone by default)."""
     folder.mkdir(parents=True, exist_ok=True)
     if os.geteuid() != 0:
         return
@@ -325,19 +411,20 @@ def own(folder, uid):
             os.lchown(p, uid, uid)
         except OSError:
             pass
-    os.chmod(folder, 0o700)
+    os.chmod(folder, mode)
 
 
 def copy_tape(src, dest):
-    """Copies a runner's tape for the judge: regular files only (no links, devices or folders), up to
-    MAX_TAPE_BYTES in all; what does not fit is left out, so the judge finds no result there."""
+    """Copies a runner's tape for the judge: its regular files named as a tape's (no links, devices,
+    folders or other files), up to MAX_TAPE_BYTES in all; what does not fit is left out, so the judge
+    finds no result there."""
     shutil.rmtree(dest.parent, ignore_errors=True)
     dest.mkdir(parents=True)
     os.chmod(dest.parent, 0o700)
     total = 0
     for entry in sorted(os.scandir(src), key=lambda e: e.name) if src.is_dir() else []:
-        if not entry.is_file(follow_symlinks=False):
-            continue
+        if not entry.is_file(follow_symlinks=False) or not (entry.name == "tape.jsonl" or entry.name.startswith("file-")):
+            continue  # only the tape's own files (tests/harness/tape.cpp names them)
         size = entry.stat(follow_symlinks=False).st_size
         if total + size > MAX_TAPE_BYTES:
             continue
@@ -368,10 +455,14 @@ def chunk(text, ex_id):
     return begin, end
 
 
-def keep_only_chunks(mine, solution, keep):
+REFERENCE_CODE = "reference code of another exercise"
+
+
+def keep_only_chunks(mine, solution, keep, path):
     """The student's whole file (helpers above the first marker included) with every exercise chunk
-    whose id is not in `keep` swapped for the solution's (as common/glsl_harness.cpp does for GLSL);
-    #line keeps compiler messages on the student's line numbers."""
+    whose id is not in `keep` swapped for the solution's; the file is written at `path`. #line keeps
+    compiler messages on the student's line numbers, and names the solution's chunks REFERENCE_CODE,
+    so that compiler_errors() can leave out what a message would quote of them."""
     starts = [0 if p == 0 else mine.rfind("\n", 0, p) + 1 for p in
               (m.start() for m in re.finditer(r"// EXERCISE ", mine))]
     out = mine[:starts[0] if starts else len(mine)]
@@ -383,13 +474,21 @@ def keep_only_chunks(mine, solution, keep):
         if not theirs:
             out += mine[begin:end]
             continue
-        out += f"#line {solution.count(chr(10), 0, theirs[0]) + 1}\n" + solution[theirs[0]:theirs[1]]
-        out += ("" if out.endswith("\n") else "\n") + f"#line {mine.count(chr(10), 0, end) + 1}\n"
+        out += f'#line 1 "{REFERENCE_CODE}"\n' + solution[theirs[0]:theirs[1]]
+        out += ("" if out.endswith("\n") else "\n") + f'#line {mine.count(chr(10), 0, end) + 1} "{path}"\n'
     return out
 
 
 def compiler_errors(output, limit=12):
+    """The compiler's error lines. A message about the solution's code that a file graded in isolation
+    holds (your code broke it, e.g. with a #define) is named, never quoted."""
     lines = [l for l in output.splitlines() if re.search(r"error|Error|undefined reference", l)]
+    hid = [l for l in lines if REFERENCE_CODE in l]
+    lines = [l for l in lines if REFERENCE_CODE not in l]
+    if hid:
+        lines.insert(0, f"error: your code breaks the {REFERENCE_CODE} that it is compiled with here "
+                        f"({len(hid)} message{'s' if len(hid) > 1 else ''} about it not shown); a #define or an "
+                        "unclosed brace in your chunk?")
     keep = lines[:limit] or output.strip().splitlines()[-limit:]
     return "\n".join(l[:300] for l in keep)
 
@@ -397,6 +496,20 @@ def compiler_errors(output, limit=12):
 # --- Grading one submission -----------------------------------------------------------------------
 BUILD_TIMED_OUT = "ERROR: the build timed out"
 DEFAULT_BUILD_TIMEOUT = 300  # seconds for one build of a submission's code (--build-timeout)
+
+
+def runner_stopped(code, out, timed_out, timeout):
+    """[(test, message)] saying why a runner ended early (a time-out or a crash), or []."""
+    running = re.findall(r"\[ RUN      \] (\S+)", out)
+    test = running[-1] if running else ""
+    if timed_out:
+        return [(test, f"ERROR: timed out after {timeout} s (an endless loop in C++?); the process was killed")]
+    if code < 0 or code > 128:
+        sig = -code if code < 0 else code - 128
+        name = signal.Signals(sig).name if sig in signal.Signals._value2member_map_ else f"exit {code}"
+        tail = "\n".join(out.strip().splitlines()[-8:])
+        return [(test, f"ERROR: the tests crashed ({name}) in {test or 'start-up'}:\n{tail}")]
+    return []
 
 
 def build_failure(output):
@@ -418,10 +531,14 @@ class Grader:
         the build time limit (compile-time work that takes too long: template or constexpr recursion,
         a huge file) is killed with its compilers and fails with a message that starts with
         BUILD_TIMED_OUT."""
-        targets = [t for lab in labs for t in (f"lab{lab['nn']}_submission", f"lab{lab['nn']}_submission_tests")]
-        code, out, timed_out = run_killable(
-            ["cmake", "--build", str(self.ws.build), "-j", str(self.build_jobs), "--target"] + targets,
-            self.build_timeout)
+        self.ws.show_sources(True)
+        try:  # the builder user compiles, in the sandbox: no network, no view of the solutions
+            code, out, timed_out = self.sandbox.run(
+                ["cmake", "--build", str(self.ws.build), "-j", str(self.build_jobs), "--target"]
+                + self.ws.runner_targets(labs), self.build_timeout, env=dict(os.environ, HOME="/tmp"),
+                uid=self.ws.builder)
+        finally:
+            self.ws.show_sources(False)
         if timed_out:
             self.build_timeouts += 1
             self.ws.after_killed_build(labs)
@@ -451,14 +568,14 @@ class Grader:
             if chunk(mine, ex_id) is None:
                 failed[ex_id] = f"the file has no '// EXERCISE {ex_id}' marker any more; keep the markers"
                 continue
-            hybrid = keep_only_chunks(mine, base, {ex_id})
+            hybrid = keep_only_chunks(mine, base, {ex_id}, self.ws.lab_dir(lab["name"]) / "exercise.cpp")
             self.ws.place(lab["name"], "exercise.cpp", hybrid.encode())
             ok, out1 = self.build_lab(lab)
             if ok:
                 good[ex_id] = True
             else:
                 failed[ex_id] = build_failure(out1)
-        combined = keep_only_chunks(mine, base, set(good))
+        combined = keep_only_chunks(mine, base, set(good), self.ws.lab_dir(lab["name"]) / "exercise.cpp")
         self.ws.place(lab["name"], "exercise.cpp", combined.encode())
         ok, out2 = self.build_lab(lab)
         if not ok:  # the parts compile alone but not together: nothing C++ can be graded
@@ -470,13 +587,13 @@ class Grader:
         return failed
 
     def list_tests(self, lab):
-        exe = self.ws.build / f"lab{lab['nn']}_submission_tests"
+        exe = self.ws.build / f"lab{lab['nn']}_tests"
         if not exe.exists():  # the lab could not be built at all (every exercise is then marked broken)
             return []
         # The list comes from the judge (the same test sources, built with the solution): a submission
         # cannot hide a test by printing another list.
-        judge = self.ws.build / f"lab{lab['nn']}_solution_tests"
-        code, out, _ = run_killable([str(judge), "--gtest_list_tests"], 60, cwd=self.ws.dir)
+        judge = self.ws.judge / f"lab{lab['nn']}_solution_tests"
+        code, out, _ = run_killable([str(judge), "--gtest_list_tests"], 60, cwd=self.ws.judge)
         tests, suite = [], ""
         for line in out.splitlines():
             if line and not line.startswith(" "):
@@ -485,37 +602,38 @@ class Grader:
                 tests.append(suite + line.split()[0])
         return tests
 
-    def run_tests(self, lab, gfilter, tag):
+    def run_tests(self, lab, gfilter, tag, held_out=False):
         """Grades one exercise's tests: (passed, failures [(test, message)], runner output). The
-        submission's test binary runs as the *runner* in the sandbox and records the values its
-        exercises produce on a tape; the solution's test binary, the *judge*, replays that tape and
-        decides. The runner's exit code, output and files claim nothing (see tests/harness/tape.hpp)."""
-        runner = self.ws.build / f"lab{lab['nn']}_submission_tests"
-        judge = self.ws.build / f"lab{lab['nn']}_solution_tests"
+        student's test binary runs as the *runner* in the sandbox and records what its C++ exercises
+        produce on a tape; the solution's test binary, the *judge*, replays that tape, draws every
+        scene itself (with the student's recorded C++ results, or the student's GLSL chunk) and
+        decides. The runner's exit code, output and files claim nothing (tests/harness/tape.hpp).
+        Held-out tests are in the judge only: a planning pass of the judge says which lab runs the
+        runner must record (`held_out`)."""
+        runner = self.ws.build / f"lab{lab['nn']}_tests"
+        judge = self.ws.judge / f"lab{lab['nn']}_solution_tests"
         tape = self.ws.fresh_tape(tag)
+        judged = self.ws.judge / "runs" / tag
+        shutil.rmtree(judged, ignore_errors=True)
+        judged.mkdir(parents=True)
         # WB_VARY_SEED: scene tests turn the scene a little and compare with the solution's render of
         # the same variation, not with the published golden (tests/harness/harness.cpp).
-        env = dict(os.environ, HOME="/tmp", WB_STRICT_GL="1", WB_VARY_SEED=str(self.vary_seed))
-        code, out, timed_out = self.sandbox.run(
-            [str(runner), f"--gtest_filter={gfilter}", "--runner", str(tape)], self.timeout, env=env, cwd=tape,
-            uid=self.ws.uid)
-        running = re.findall(r"\[ RUN      \] (\S+)", out)
-        stopped = []  # why the runner ended early, shown before what the judge found
-        if timed_out:
-            stopped = [(running[-1] if running else "", f"ERROR: timed out after {self.timeout} s (an endless "
-                        "loop in C++ or in a shader?); the process was killed")]
-        elif code < 0 or code > 128:
-            sig = -code if code < 0 else code - 128
-            name = signal.Signals(sig).name if sig in signal.Signals._value2member_map_ else f"exit {code}"
-            tail = "\n".join(out.strip().splitlines()[-8:])
-            stopped = [(running[-1] if running else "", f"ERROR: the tests crashed ({name}) in "
-                        f"{running[-1] if running else 'start-up'}:\n{tail}")]
-        judged = self.ws.dir / "judge" / tag
+        env = dict(os.environ, HOME="/tmp", WB_STRICT_GL="1", WB_VARY_SEED=str(self.vary_seed),
+                   WB_RECORD_SHADERS=str(self.ws.stubs / lab["name"] / "shaders"))
+        jenv = dict(env, WB_SUBMISSION_DIR=str(self.ws.lab_dir(lab["name"])))  # the student's GLSL
+        what = ["--requests", str(self.plan(judge, gfilter, judged, jenv, tape))] if held_out \
+            else [f"--gtest_filter={gfilter}"]
+        code, out, timed_out = self.sandbox.run([str(runner)] + what + ["--runner", str(tape)], self.timeout,
+                                                env=env, cwd=tape, uid=self.ws.uid)
+        stopped = runner_stopped(code, out, timed_out, self.timeout)  # shown before what the judge found
         copy_tape(tape, judged / "tape")
         report = judged / "report.json"
         jcode, jout, jtimed = run_killable([str(judge), f"--gtest_filter={gfilter}", "--judge", str(judged / "tape"),
-                                            f"--gtest_output=json:{report}"], self.timeout, env=env, cwd=judged)
-        if jtimed or not report.exists():
+                                            f"--gtest_output=json:{report}"], self.timeout, env=jenv, cwd=judged)
+        if jtimed:
+            return False, stopped + [("", f"ERROR: timed out after {self.timeout} s while the judge drew this "
+                                      "exercise with your shaders (an endless loop in a shader?)")], out
+        if not report.exists():
             return False, stopped + [("", "ERROR: the judge could not finish (a fault of the grader, not of the "
                                       f"submission: tell the instructor):\n{jout[-2000:]}")], out
         data = json.loads(report.read_text())
@@ -529,6 +647,30 @@ class Grader:
             return False, stopped + [("", "ERROR: no tests ran")], out
         failures = stopped + failures
         return not failures, failures, out
+
+    def plan(self, judge, gfilter, judged, env, tape):
+        """The judge's planning pass over held-out tests: the lab runs (JSON lines {key, args}) the
+        runner must record, written into its tape folder as requests.jsonl, with each input file of
+        the instructor's (a held-out scene) copied beside it, since the runner cannot read them."""
+        plan = judged / "plan.jsonl"
+        (judged / "empty").mkdir()
+        run_killable([str(judge), f"--gtest_filter={gfilter}", "--judge", str(judged / "empty")], self.timeout,
+                     env=dict(env, WB_PLAN=str(plan)), cwd=judged)
+        inputs, lines = tape / "inputs", []
+        for line in plan.read_text().splitlines() if plan.exists() else []:
+            request = json.loads(line)
+            for k, arg in enumerate(request["args"]):
+                path = Path(arg)
+                if path.is_absolute() and path.is_file() and ROOT in path.parents:
+                    inputs.mkdir(exist_ok=True)
+                    copy = inputs / f"{len(list(inputs.iterdir()))}-{path.name}"
+                    shutil.copyfile(path, copy)
+                    request["args"][k] = str(copy)
+            lines.append(json.dumps(request))
+        requests = tape / "requests.jsonl"
+        requests.write_text("".join(l + "\n" for l in lines))
+        own(tape, self.ws.uid)
+        return requests
 
     def grade_exercise(self, lab, e, tests, broken):
         """(ok, failures, images, hidden result, has hidden tests) of one exercise with the current build."""
@@ -544,14 +686,14 @@ class Grader:
         if has_hidden and any("timed out after" in m for _, m in failures):  # another wait would tell nothing new
             hidden_result = (False, [("", "ERROR: not run: the exercise's other tests timed out")], "")
         elif has_hidden:
-            hidden_result = self.run_tests(lab, f"Hidden*.Ex{tag}_*", f"{tag}_hidden")
+            hidden_result = self.run_tests(lab, f"Hidden*.Ex{tag}_*", f"{tag}_hidden", held_out=True)
         kept = copy_images(failures + (hidden_result[1] if hidden_result else []), self.images, tag)
         return ok, failures, kept, hidden_result, has_hidden
 
     def grade_alone(self, lab, e, mine, tests):
         """Grades C++ exercise `e` with the solution's exercise.cpp and only its own chunk from `mine`."""
         solution = ROOT / "solutions" / lab["name"] / "exercise.cpp"
-        hybrid = keep_only_chunks(mine, solution.read_text(), {e["id"]}) \
+        hybrid = keep_only_chunks(mine, solution.read_text(), {e["id"]}, self.ws.lab_dir(lab["name"]) / "exercise.cpp") \
             if solution.exists() and chunk(mine, e["id"]) else None
         if hybrid is None:
             return None
@@ -596,6 +738,7 @@ class Grader:
                 results.fail_all(f"ERROR: the submission could not be read: {e}")
                 return
             self.ws.reset_to_stubs()
+            self.ws.fresh_outputs()
             t_build = time.time()
             found_files = {}
             for lab in self.labs:  # every lab's files first: one parallel build for all when they compile
@@ -972,6 +1115,22 @@ def salvage(out_dir, name, labs, sandbox, problem, elapsed):
                 "timing": {"build": 0.0, "tests": 0.0}, "problems": [problem]}
 
 
+def hide_from_sandbox(paths):
+    """Makes `paths` (the checkout's solutions, held-out tests, git history and other builds; the
+    submissions and the results) unreadable to the sandbox users while grading runs, and puts their
+    modes back when it ends. Only the student edition in build-grade/wK stays in their reach."""
+    modes = {}
+    for p in paths:
+        try:
+            st = os.lstat(p)
+            if not stat.S_ISLNK(st.st_mode):
+                modes[p] = stat.S_IMODE(st.st_mode)
+                os.chmod(p, modes[p] & ~0o077)
+        except OSError:
+            pass
+    atexit.register(lambda: [os.chmod(p, m) for p, m in modes.items() if p.exists()])
+
+
 def main():
     ap = argparse.ArgumentParser(prog="workbook grade", description=__doc__.split("\n")[0])
     ap.add_argument("submission", nargs="?", help="a submission (folder or archive), or with --batch a folder of them")
@@ -993,8 +1152,9 @@ def main():
     args = ap.parse_args()
     only = [x.strip().zfill(2) for x in args.labs.split(",")] if args.labs else None
     labs = load_labs(only)
+    sandbox = Sandbox()
     if args.prepare_only:
-        secs = Workspace(0, labs, ROOT / "build-grade").prepare(os.cpu_count() or 2)
+        secs = Workspace(0, labs, ROOT / "build-grade").prepare(os.cpu_count() or 2, sandbox)
         log(f"grade: the grading build is ready ({secs:.0f} s)")
         return 0
     if not args.submission:
@@ -1013,13 +1173,14 @@ def main():
     out.mkdir(parents=True, exist_ok=True)
     workers = max(1, min(args.jobs, len(subs)))
     base = ROOT / "build-grade"
-    sandbox = Sandbox()
+    if sandbox.drop:  # what the student's code must not read: everything of the instructor's but its trees
+        hide_from_sandbox([p for p in ROOT.iterdir() if p.name != "build-grade"] + [out] + ([src] if args.batch else []))
     for n in sandbox.notes:
         log(f"grade: note: {n}")
     spaces = [Workspace(k, labs, base) for k in range(workers)]
     for ws in spaces:
         log(f"grade: preparing the grading build {ws.dir} (the first time builds the framework) ...")
-        secs = ws.prepare(max(1, (os.cpu_count() or 2)))
+        secs = ws.prepare(max(1, (os.cpu_count() or 2)), sandbox)
         log(f"grade: ready in {secs:.0f} s")
     done = [0]
 

@@ -27,6 +27,14 @@ The red team (cheats score zero; honest oddities score full marks):
   crlf_bom             full, with Windows line ends and a UTF-8 byte-order mark in both files
   symlink              full, with exercise.cpp a link to the solution's: not followed, the stub is
                        graded
+  include_solutions    the stubs, with exercise.cpp including the solution's (relative and absolute
+                       paths, where __has_include finds one): nothing to include, the stub is graded
+  leak_secrets         full, with C++ that looks for the solutions, the held-out tests and the
+                       judge's build from its own path and throws what it finds: it finds nothing,
+                       so full marks, and no output holds a line of them
+  write_other          full, with C++ that tries to write a file into every folder it can reach
+                       (other students' results, tapes, builds): full marks, and no such file
+                       anywhere once grading ends
 
 DIR/expected.json gives the score each should get and the exercises it should lose, computed from
 labs/*/exercises.json: the grader is held against it by tests/grading.
@@ -138,6 +146,70 @@ const int flooded = [] {
 """
 
 
+INCLUDER = r"""// Includes the solution's file wherever it might be, else is the stub.
+#if __has_include("../../../../../solutions/@LAB@/exercise.cpp")
+#include "../../../../../solutions/@LAB@/exercise.cpp"
+#elif __has_include("../../../../solutions/@LAB@/exercise.cpp")
+#include "../../../../solutions/@LAB@/exercise.cpp"
+#elif __has_include("@ROOT@/solutions/@LAB@/exercise.cpp")
+#include "@ROOT@/solutions/@LAB@/exercise.cpp"
+#elif __has_include("/autograder/source/solutions/@LAB@/exercise.cpp")
+#include "/autograder/source/solutions/@LAB@/exercise.cpp"
+#else
+@STUB@
+#endif
+"""
+
+LEAKER = r"""
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+namespace {
+// Looks for the instructor's files above its own executable and throws whatever it can read.
+void leakSecrets() {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path dir = fs::read_symlink("/proc/self/exe", ec).parent_path();
+  for (int up = 0; up < 8 && !dir.empty(); ++up, dir = dir.parent_path()) {
+    for (const char* rel : {"solutions/@LAB@/exercise.cpp", "solutions/@LAB@/shaders/exercise.glsl",
+                            "tests/hidden/@LAB@/heldout_test.cpp", "tests/hidden/@LAB@/scenes/heldout.json",
+                            "tests/mutants", "build/mutants/@LAB@", "build-grade/judge", ".git/config"}) {
+      std::ifstream in(dir / rel);
+      std::stringstream text;
+      if (in && text << in.rdbuf() && !text.str().empty()) throw std::runtime_error("LEAKED " + text.str());
+      if (fs::is_directory(dir / rel, ec))
+        for (auto it = fs::recursive_directory_iterator(dir / rel, ec); it != fs::recursive_directory_iterator();
+             it.increment(ec))
+          if (std::ifstream f{it->path()}; f && it->is_regular_file(ec) && text << f.rdbuf() && !text.str().empty())
+            throw std::runtime_error("LEAKED " + text.str());
+    }
+  }
+}
+}  // namespace
+"""
+
+INTRUDER = r"""
+#include <filesystem>
+#include <fstream>
+namespace {
+// Tries to leave a file in every folder it can reach from above its own executable.
+const int intruded = [] {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path top = fs::read_symlink("/proc/self/exe", ec).parent_path();
+  for (int up = 0; up < 4 && top.has_parent_path(); ++up) top = top.parent_path();
+  int seen = 0;
+  for (auto it = fs::recursive_directory_iterator(top, fs::directory_options::skip_permission_denied, ec);
+       it != fs::recursive_directory_iterator() && seen < 20000; it.increment(ec), ++seen)
+    if (it->is_directory(ec)) std::ofstream(it->path() / "WB_INTRUDER") << "written by another student\n";
+  return 0;
+}();
+}  // namespace
+"""
+
+
 def red_team(out, full, expect, cpp, glsl, points, the_labs):
     """The cheats and the honest oddities (see the module's doc)."""
     lab, e_cpp = cpp
@@ -175,6 +247,17 @@ def red_team(out, full, expect, cpp, glsl, points, the_labs):
     target.unlink()
     target.symlink_to(ROOT / "solutions" / lab / e_cpp["file"])
     expect("symlink", cpp_ids)
+    write_tree(out / "include_solutions", lambda name: ROOT / "labs" / name, the_labs)
+    path = out / "include_solutions" / "labs" / lab / e_cpp["file"]
+    stub = path.read_text()
+    path.write_text(INCLUDER.replace("@LAB@", lab).replace("@ROOT@", str(ROOT)).replace("@STUB@", stub))
+    expect("include_solutions", list(points))
+    d = full("leak_secrets")
+    prepend(d, lab, e_cpp["file"], LEAKER.replace("@LAB@", lab))
+    edit(d, lab, e_cpp["file"], cpp_ids[0], "  leakSecrets();\n")
+    expect("leak_secrets", [])
+    prepend(full("write_other"), lab, e_cpp["file"], INTRUDER)
+    expect("write_other", [])
 
 
 def main():

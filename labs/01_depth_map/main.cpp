@@ -40,13 +40,13 @@ class DepthMapLab : public wb::Lab {
     // The light's camera: an orthographic box around the scene, or the spot's perspective cone.
     const bool spot = light.type == wb::LightType::Spot;
     const bool ready =
-        spot ? attempt("01.2",
+        spot ? attempt("01.2", lightViewProj,
                        [&] {
-                         lightViewProj = lab01::spotLightViewProj(light.position, light.direction, light.angle,
-                                                                  light.nearPlane, light.farPlane);
+                         return lab01::spotLightViewProj(light.position, light.direction, light.angle, light.nearPlane,
+                                                         light.farPlane);
                        })
-             : light.type == wb::LightType::Directional && attempt("01.1", [&] {
-                 lightViewProj = lab01::directionalLightViewProj(light.direction, scene.boundsMin, scene.boundsMax);
+             : light.type == wb::LightType::Directional && attempt("01.1", lightViewProj, [&] {
+                 return lab01::directionalLightViewProj(light.direction, scene.boundsMin, scene.boundsMax);
                });
     shadowMap.resize(shadowMapSize());
 

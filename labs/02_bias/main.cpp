@@ -64,8 +64,8 @@ class BiasLab : public wb::Lab {
     {
       auto timer = timePass("shadow");
       if (method == PolygonOffset)
-        ready = attempt("02.3", [&] { lab02::applyRasterizerBias(offsetFactor, offsetUnits); });
-      if (method == FrontFaces) ready = attempt("02.4", [&] { lab02::cullForDepthPass(true); });
+        ready = attemptRasterState("02.3", [&] { lab02::applyRasterizerBias(offsetFactor, offsetUnits); });
+      if (method == FrontFaces) ready = attemptRasterState("02.4", [&] { lab02::cullForDepthPass(true); });
       renderShadowMap(*depthProgram, shadowMap, light, lightViewProj);
       glDisable(GL_POLYGON_OFFSET_FILL);  // back to the state every other pass expects
       glDisable(GL_CULL_FACE);

@@ -47,7 +47,8 @@ class EsmLab : public wb::Lab {
     // The exponent's bound (04.4): exp(c) must fit the format, unless the map is in log space.
     float cUsed = c;
     double bound = 0;
-    if (!logSpace && attempt("04.4", [&] { bound = lab04::esmMaxExponent(wb::formatMax(glFormat)); }) && c > bound) {
+    if (!logSpace && attempt("04.4", bound, [&] { return lab04::esmMaxExponent(wb::formatMax(glFormat)); }) &&
+        c > bound) {
       cUsed = float(bound) * 0.999f;
       warn("esm.c = " + std::to_string(c) + " overflows " + (format == 0 ? "fp32" : "fp16") + "; clamped to " +
            std::to_string(cUsed) + " (or turn on esm.log_space)");

@@ -117,7 +117,7 @@ class VsmLab : public wb::Lab {
           "|\n|---|---|---|\n");
     for (size_t k = 0; k < std::size(ts); ++k) {
       double f = -1;
-      attempt("05.4", [&] { f = lab05::threePlaneBleeding(ts[k]); });
+      attempt("05.4", f, [&] { return lab05::threePlaneBleeding(ts[k]); });
       measured.push_back(out[k].x), formula.push_back(float(f));
       if (print) std::printf("| %g | %.5f | %.5f |\n", ts[k], out[k].x, f);
     }

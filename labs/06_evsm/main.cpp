@@ -47,7 +47,7 @@ class EvsmLab : public wb::Lab {
     // The exponents' bound (06.2): exp(c)^2 must fit the format.
     float pos = cPos, neg = cNeg;
     double bound = 0;
-    if (attempt("06.2", [&] { bound = lab06::evsmMaxExponent(wb::formatMax(glFormat)); }) &&
+    if (attempt("06.2", bound, [&] { return lab06::evsmMaxExponent(wb::formatMax(glFormat)); }) &&
         std::max(cPos, cNeg) > bound) {
       pos = std::min(cPos, float(bound) * 0.999f), neg = std::min(cNeg, float(bound) * 0.999f);
       warn("an EVSM exponent above " + std::to_string(bound) + " overflows " + (format == 0 ? "fp32" : "fp16") +

@@ -80,6 +80,14 @@ for name in expected:
     check(len(text) < 1 << 20, f"{name}: results.json is {len(text)} bytes")
     leaked = [l for l in solution_lines if l in text]
     check(not leaked, f"{name}: results.json shows solution code: {leaked[:2]}")
+    # The held-out tests and their scenes likewise (leak_secrets throws whatever it could read).
+    check("LEAKED" not in text, f"{name}: results.json shows a file its code read: {text[text.find('LEAKED'):][:200]}")
+
+# Nothing a runner wrote landed outside its own folders (write_other tries every folder it can reach).
+own = ("/tapes/", "/test-output/")  # the runner's own folders (emptied for the next submission)
+intruded = [str(p) for base in (grades, subs, root) for p in base.rglob("WB_INTRUDER")
+            if not ("build-grade/w" in str(p) and any(o in str(p) for o in own))]
+check(not intruded, f"a runner wrote into folders not its own: {intruded[:5]}")
 
 # Every process a grading run started has ended (the sandbox's users are 61000 and up).
 if os.geteuid() == 0:
@@ -89,7 +97,7 @@ if os.geteuid() == 0:
             uid = int(next(l for l in status.read_text().splitlines() if l.startswith("Uid:")).split()[1])
         except (OSError, StopIteration, ValueError):
             continue
-        if 61000 <= uid < 61100:
+        if 61000 <= uid < 61600:  # runners (61000 + k) and builders (61500 + k)
             left.append(f"pid {status.parent.name} (uid {uid})")
     check(not left, f"processes of the sandbox's users outlived grading: {left}")
 for p in problems:

@@ -36,6 +36,9 @@ class FakeWorkspace:
     def reset_to_stubs(self):
         pass
 
+    def fresh_outputs(self):
+        pass
+
     def place(self, lab, rel, content):
         pass
 

@@ -83,11 +83,12 @@ std::string renderer() { return g_renderer; }
 
 std::vector<glm::vec4> runExercise(const std::string& id, const std::string& body, int count, int stride,
                                    const std::vector<glm::vec4>& inputs, const std::vector<unsigned>& textures) {
-  return observe<std::vector<glm::vec4>>([&] {
-    const fs::path file = findShaderFile("exercise.glsl", shaderSearchPath());
-    return runGlslKernel(isolatedExerciseSource("exercise.glsl", id), file, body, count, stride, inputs,
-                         std::vector<GLuint>(textures.begin(), textures.end()));
-  });
+  nextObservationKey();  // (keeps the keys of the test's later observations the same in every mode)
+  // GLSL is evaluated by whoever decides: a runner has nothing to record (it never sees the
+  // solution's chunks), and a judge runs the submission's chunk itself, in the GPU driver.
+  if (tapeMode() == TapeMode::Record) return std::vector<glm::vec4>(size_t(count) * size_t(stride));
+  return runGlslKernel(isolatedExerciseSource("exercise.glsl", id), submittedShaderFile("exercise.glsl"), body, count,
+                       stride, inputs, std::vector<GLuint>(textures.begin(), textures.end()));
 }
 
 // The seed of grading-time variations (WB_VARY_SEED, set by the grader), or -1: scenes are then
@@ -114,49 +115,123 @@ static std::pair<int, std::string> runApp(const fs::path& out, const std::string
   return {WIFEXITED(status) ? WEXITSTATUS(status) : 128, cmd};
 }
 
-// The app a judge trusts: the solution's (this build's in the student edition, which has none).
-static std::string trustedExe() { return variant::kSolutionExe[0] ? variant::kSolutionExe : variant::kLabExe; }
-
-// Runs the lab headless for exercise `id` with GLSL isolation (the exercise's own chunk from this
-// build, everything else from the solution: a GLSL exercise then runs in the solution's app, so C++
-// stubs cannot block it, and a C++ exercise runs in this build's app with the solution's GLSL).
-// Returns {"code": exit code, "log": output, "command": the command}.
-static nlohmann::json runLabProcess(const std::string& id, const fs::path& out, const std::vector<std::string>& args,
-                                    const std::vector<std::string>& extra) {
+// runApp() as JSON: {"code", "log" (its start and end when long), "command"}.
+static nlohmann::json runAppJson(const fs::path& out, const std::string& env, const std::string& exe,
+                                 const std::vector<std::string>& args) {
   fs::create_directories(out);
-  std::string env = "WB_STRICT_GL=1 ";
-  std::string exe = variant::kLabExe;
-  if (*variant::kSolutionDir != '\0' && !updatingGolden()) {
-    const std::string mine = readFile(findShaderFile("exercise.glsl", shaderSearchPath()));
-    if (mine.find("// EXERCISE " + id) != std::string::npos && variant::kSolutionExe[0]) exe = variant::kSolutionExe;
-    std::ofstream(out / "exercise.glsl") << isolatedExerciseSource("exercise.glsl", id);
-    env += "WB_SHADER_OVERLAY=" + quote(out.string()) + " ";
-  }
   const fs::path log = out / "lab.log";
-  std::vector<std::string> all = args;
-  all.insert(all.end(), extra.begin(), extra.end());
-  const auto [code, cmd] = runApp(out, env, exe, all, log);
-  // The log is the student's process's output: only its start and end are kept (and recorded).
+  const auto [code, cmd] = runApp(out, env, exe, args, log);
   std::string text = readFile(log);
   if (text.size() > 40000) text = text.substr(0, 20000) + "\n[...]\n" + text.substr(text.size() - 20000);
   return {{"code", code}, {"log", text}, {"command", cmd}};
 }
 
-// Runs the lab for exercise `id` (see runLabProcess) as an observation: a runner records its exit
-// code, output, record (run.json) and visibility (result.pfm, when `args` ask for it); a judge gets
-// them back from the tape. Fails with ERROR / NOT IMPLEMENTED when it did not run.
+static std::vector<std::string> joined(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+// The app a judge trusts: the solution's (this build's in the student edition, which has none).
+static std::string trustedExe() { return variant::kSolutionExe[0] ? variant::kSolutionExe : variant::kLabExe; }
+
+// The environment that makes an app use `id`'s isolated GLSL (the submission's chunk of a GLSL
+// exercise and the solution's other chunks; all solution for a C++ exercise), written into `out`.
+static std::string isolatedGlsl(const std::string& id, const fs::path& out) {
+  if (*variant::kSolutionDir == '\0' || updatingGolden()) return "";
+  std::ofstream(out / "exercise.glsl") << isolatedExerciseSource("exercise.glsl", id);
+  return "WB_SHADER_OVERLAY=" + quote(out.string()) + " ";
+}
+
+// Direct (ctest): this build's lab draws exercise `id` with GLSL isolation. A GLSL exercise runs in
+// the solution's app (so C++ stubs cannot block it), a C++ exercise in this build's app with the
+// solution's GLSL.
+static nlohmann::json runDirect(const std::string& id, const fs::path& out, const std::vector<std::string>& args) {
+  fs::create_directories(out);
+  const bool glsl = isGlslExercise("exercise.glsl", id);
+  const std::string exe = glsl && !updatingGolden() ? trustedExe() : variant::kLabExe;
+  return runAppJson(out, "WB_STRICT_GL=1 " + isolatedGlsl(id, out), exe, args);
+}
+
+// What a runner's app needs of the scene's arguments: not the measurements or images, only a run.
+static std::vector<std::string> runnerArgs(const std::vector<std::string>& args) {
+  std::vector<std::string> kept;
+  for (size_t k = 0; k < args.size(); ++k) {
+    if (args[k] == "--metrics") continue;
+    if (args[k] == "--dump-visibility" || args[k] == "--screenshot" || args[k] == "--heatmap" ||
+        args[k] == "--record") {
+      ++k;
+      continue;
+    }
+    kept.push_back(args[k]);
+  }
+  return kept;
+}
+
+// The environment of a runner's lab run, which only records what the C++ exercises return: with
+// the stub shaders when the grader gives them (WB_RECORD_SHADERS), so that the student's GLSL, which
+// the judge grades on its own, cannot stop the C++ exercises' runs.
+static std::string recordEnv() {
+  const char* stubs = std::getenv("WB_RECORD_SHADERS");
+  return std::string("WB_STRICT_GL=1 ") + (stubs && *stubs ? "WB_SHADER_OVERLAY=" + quote(stubs) + " " : "");
+}
+
+// Keeps only exercise `id`'s calls in a recorded --record-exercises file: the judge's app replays
+// the graded exercise and runs its own code for the others.
+static bool keepOnlyCalls(const fs::path& file, const std::string& id) {
+  try {
+    const auto all = nlohmann::json::parse(readFile(file));
+    nlohmann::json calls = nlohmann::json::object();
+    if (all.at("calls").contains(id)) calls[id] = all.at("calls").at(id);
+    std::ofstream(file) << nlohmann::json{{"calls", calls}}.dump();
+    return calls.contains(id);
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+// Where the pixels of exercise `id` come from, by mode: direct (ctest), runDirect(); a runner only
+// records what a C++ exercise returned in its own app (--record-exercises, kept on the tape) and
+// has nothing to do for a GLSL exercise; a judge has the trusted app draw the scene, with the
+// runner's recorded results for a C++ exercise and the submission's chunk for a GLSL one. Returns
+// the app run {"code", "log", "command"}, or throws wb::Error with what went wrong.
+static nlohmann::json drawExercise(const std::string& id, const fs::path& out, const std::vector<std::string>& args) {
+  const std::string key = nextObservationKey();
+  if (tapeMode() == TapeMode::Direct) return runDirect(id, out, args);
+  const bool glsl = isGlslExercise("exercise.glsl", id);
+  if (const char* plan = std::getenv("WB_PLAN"); plan && *plan && tapeMode() == TapeMode::Replay) {
+    // A judge's planning pass (held-out tests, which no runner has): the runs a runner must record.
+    if (!glsl)
+      std::ofstream(plan, std::ios::app) << nlohmann::json{{"key", key}, {"args", runnerArgs(args)}}.dump() << "\n";
+    throw Error("planned");
+  }
+  if (glsl && tapeMode() == TapeMode::Record) throw Error("recorded for the judge");
+  if (glsl) return runAppJson(out, "WB_STRICT_GL=1 " + isolatedGlsl(id, out), trustedExe(), args);
+  const fs::path calls = out / "exercises.json";
+  fs::remove(calls);
+  const auto mine = observeJson(key, [&] {
+    return runAppJson(out, recordEnv(), variant::kLabExe, joined(runnerArgs(args), {"--record-exercises", calls}));
+  });
+  observeFile(key + ".exercises", calls);
+  if (tapeMode() == TapeMode::Record) throw Error("recorded for the judge");
+  if (mine.value("code", 128) != 0) return mine;  // the student's app failed: that is the result
+  if (!fs::exists(calls) || !keepOnlyCalls(calls, id))
+    throw Error("your lab never ran exercise " + id + " in this scene (its run left no result):\n" +
+                mine.value("log", std::string()));
+  return runAppJson(out, "WB_STRICT_GL=1 " + isolatedGlsl(id, out), trustedExe(),
+                    joined(args, {"--replay-exercises", calls.string()}));
+}
+
+// Draws exercise `id` (drawExercise) with a record, and reads it. Fails with ERROR / NOT
+// IMPLEMENTED when it did not run, and always in a runner (which decides nothing).
 static ::testing::AssertionResult runIsolated(const std::string& id, const fs::path& out,
                                               const std::vector<std::string>& args, std::string& logText,
                                               RunResult* result = nullptr) {
   const fs::path record = out / "run.json";
   fs::create_directories(out);
   fs::remove(record);
-  const std::string key = nextObservationKey();
   nlohmann::json run;
   try {
-    run = observeJson(key, [&] { return runLabProcess(id, out, args, {"--record", record.string()}); });
-    observeFile(key + ".record", record);
-    observeFile(key + ".visibility", out / "result.pfm");
+    run = drawExercise(id, out, joined(args, {"--record", record.string()}));
   } catch (const std::exception& e) {
     return ::testing::AssertionFailure() << "ERROR: " << e.what();
   }
@@ -189,24 +264,27 @@ static ::testing::AssertionResult runIsolated(const std::string& id, const fs::p
   return ::testing::AssertionSuccess();
 }
 
-// A judge measures the runner's visibility itself: the solution's app (trusted code; this build's
-// app in the student edition) renders the same scene for the positions and measures the recorded
-// visibility buffer against exact visibility (--measure-visibility), so no number comes from the
-// student's process.
-static ::testing::AssertionResult judgeMeasurement(const fs::path& out, const std::vector<std::string>& args,
-                                                   RunResult& run) {
-  const fs::path record = out / "judge.json";
-  std::vector<std::string> all = {"--record", record.string(), "--measure-visibility", (out / "result.pfm").string()};
-  all.insert(all.end(), args.begin(), args.end());
-  const int status = runApp(out, "", trustedExe(), all, out / "judge.log").first;
-  try {
-    run = readRunRecord(record);
-  } catch (const std::exception& e) {
-    return ::testing::AssertionFailure() << "ERROR: the measurement of the recorded visibility failed: " << e.what();
+int recordRequestedRuns(const fs::path& requests) {
+  std::ifstream in(requests);
+  if (!in) {
+    std::fprintf(stderr, "cannot read --requests file %s\n", requests.string().c_str());
+    return 2;
   }
-  if (status != 0 || run.status != "ok")
-    return ::testing::AssertionFailure() << "ERROR: the recorded visibility could not be measured: " << run.error;
-  return ::testing::AssertionSuccess();
+  int k = 0;
+  for (std::string line; std::getline(in, line); ++k) {
+    const auto request = nlohmann::json::parse(line, nullptr, false);
+    if (request.is_discarded() || !request.contains("key") || !request.contains("args")) continue;
+    const std::string key = request["key"].get<std::string>();
+    // In the tape's folder: the runner's own, while other exercises' runners may be running too.
+    const fs::path out = tapeDir() / ("request-" + std::to_string(k)), calls = out / "exercises.json";
+    fs::create_directories(out);
+    const auto args = request["args"].get<std::vector<std::string>>();
+    observeJson(key, [&] {
+      return runAppJson(out, recordEnv(), variant::kLabExe, joined(args, {"--record-exercises", calls.string()}));
+    });
+    observeFile(key + ".exercises", calls);
+  }
+  return 0;
 }
 
 std::string runLabOutput(const std::string& id, const std::string& name, const std::vector<std::string>& args,
@@ -221,13 +299,10 @@ SceneMetrics measureScene(const std::string& id, const std::string& name, const 
   const fs::path out = fs::path(variant::kOutputDir) / ("Ex" + id + "_" + name);
   std::vector<std::string> scene = {"--size", "480x270", "--metrics"};
   scene.insert(scene.end(), args.begin(), args.end());
-  std::vector<std::string> all = {"--dump-visibility", (out / "result.pfm").string()};  // what a judge measures
-  all.insert(all.end(), scene.begin(), scene.end());
   std::string log;
   SceneMetrics m;
   RunResult run;
-  auto ok = runIsolated(id, out, all, log, &run);
-  if (ok && tapeMode() == TapeMode::Replay) ok = judgeMeasurement(out, scene, run);
+  const auto ok = runIsolated(id, out, scene, log, &run);
   if (!ok) {
     m.failure = ok.message();
     return m;
@@ -253,7 +328,6 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
   RunResult run;
   const auto ok = runIsolated(id, out, all, logText, &run);
   if (!ok) FAIL() << ok.message();
-  if (tapeMode() == TapeMode::Record) return;  // the judge compares
   FloatImage got;
   try {
     got = readPfm(pfm);

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,11 @@ std::vector<glm::vec4> runExercise(const std::string& id, const std::string& bod
 /// Lab arguments for a scene test: `--set` for each "key=value", and `--scene scenes/<scene>` when given
 /// (a held-out scene, "hidden/NAME.json", is read from the instructor-only tests/hidden/<lab>/scenes).
 std::vector<std::string> labArgs(const std::vector<std::string>& settings, const std::string& scene = "");
+
+/// A runner's answer to a judge's plan (held-out tests, which are not in the runner): records the
+/// lab run of each request in `requests` (JSON lines {"key", "args"}: what the judge's planning pass,
+/// WB_PLAN=FILE, wrote) on the tape, under the judge's keys. Returns the exit code for main().
+int recordRequestedRuns(const std::filesystem::path& requests);
 
 /// Runs the lab headless for exercise `id` (isolated as in expectSceneMatchesGolden()) with `args`
 /// and returns its output; `failure` is set ("ERROR: …" or "NOT IMPLEMENTED: …") if it did not run.

@@ -5,6 +5,8 @@
 //                    this on the student build to prove the stubs are stubs)
 //   --update-golden  regenerate tests/golden/<lab>/ from this build (solution builds only)
 //   --runner DIR     record every value the exercises produce on a tape in DIR; decide nothing
+//   --requests F     with --runner: record only the lab runs F asks for (held-out tests; see
+//                    recordRequestedRuns in harness.hpp)
 //   --judge DIR      replay the tape in DIR instead of running any exercise, and decide
 //                    (see tape.hpp: the grader runs the student's build as the runner and the
 //                    solution's as the judge; `./workbook check` runs both the same way)
@@ -138,10 +140,13 @@ TEST(Manifest, EveryExerciseHasItsMarker) {
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   bool check = false, expectStubs = false;
+  std::string requests;
   for (int i = 1; i < argc; ++i) {
     const bool runner = !std::strcmp(argv[i], "--runner"), judge = !std::strcmp(argv[i], "--judge");
     if ((runner || judge) && i + 1 < argc)
       wb::test::openTape(runner ? wb::test::TapeMode::Record : wb::test::TapeMode::Replay, argv[++i]);
+    else if (!std::strcmp(argv[i], "--requests") && i + 1 < argc)
+      requests = argv[++i];
     else if (!std::strcmp(argv[i], "--check"))
       check = true;
     else if (!std::strcmp(argv[i], "--expect-stubs"))
@@ -151,7 +156,7 @@ int main(int argc, char** argv) {
     else {
       std::fprintf(stderr,
                    "%s: unknown option '%s' (accepted: --check, --expect-stubs, --update-golden, --runner DIR, "
-                   "--judge DIR, --gtest_*)\n",
+                   "--requests F, --judge DIR, --gtest_*)\n",
                    argv[0], argv[i]);
       return 2;
     }
@@ -159,6 +164,13 @@ int main(int argc, char** argv) {
   if (wb::test::g_updateGolden && std::string(wb::variant::kName) != "solution") {
     std::fprintf(stderr, "%s: golden data is generated from the solution build only\n", argv[0]);
     return 2;
+  }
+  if (!requests.empty()) {
+    if (wb::test::tapeMode() != wb::test::TapeMode::Record) {
+      std::fprintf(stderr, "%s: --requests needs --runner DIR\n", argv[0]);
+      return 2;
+    }
+    return wb::test::recordRequestedRuns(requests);
   }
   if (!check) return RUN_ALL_TESTS();
   auto& listeners = ::testing::UnitTest::GetInstance()->listeners();

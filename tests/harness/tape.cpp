@@ -29,23 +29,6 @@ std::string sanitize(const std::string& key) {
   return s;
 }
 
-uint32_t bits(float v) {
-  uint32_t b;
-  std::memcpy(&b, &v, 4);
-  return b;
-}
-float fromBits(uint32_t b) {
-  float v;
-  std::memcpy(&v, &b, 4);
-  return v;
-}
-std::vector<float> floatsOf(const json& j, size_t n) {
-  if (!j.is_array() || (n && j.size() != n)) throw Error("a recorded value has the wrong shape");
-  std::vector<float> v;
-  for (const auto& e : j) v.push_back(fromBits(e.get<uint32_t>()));
-  return v;
-}
-
 }  // namespace
 
 TapeMode tapeMode() { return g_mode; }
@@ -115,81 +98,6 @@ bool observeFile(const std::string& name, const fs::path& path) {
   if (!fs::is_regular_file(kept) || fs::is_symlink(kept)) return false;
   fs::create_directories(path.parent_path());
   return fs::copy_file(kept, path, fs::copy_options::overwrite_existing, ec) && !ec;
-}
-
-json encode(float v) { return bits(v); }
-json encode(double v) {
-  uint64_t b;
-  std::memcpy(&b, &v, 8);
-  return std::to_string(b);
-}
-json encode(bool v) { return v; }
-json encode(int v) { return v; }
-json encode(const glm::vec2& v) { return {bits(v.x), bits(v.y)}; }
-json encode(const glm::vec3& v) { return {bits(v.x), bits(v.y), bits(v.z)}; }
-json encode(const glm::vec4& v) { return {bits(v.x), bits(v.y), bits(v.z), bits(v.w)}; }
-json encode(const glm::mat4& m) {
-  json j = json::array();
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) j.push_back(bits(m[c][r]));
-  return j;
-}
-json encode(const std::vector<glm::vec4>& v) {
-  json j = json::array();
-  for (const auto& e : v)
-    for (int k = 0; k < 4; ++k) j.push_back(bits(e[k]));
-  return j;
-}
-
-template <>
-float decode<float>(const json& j) {
-  return fromBits(j.get<uint32_t>());
-}
-template <>
-double decode<double>(const json& j) {
-  const uint64_t b = std::stoull(j.get<std::string>());
-  double v;
-  std::memcpy(&v, &b, 8);
-  return v;
-}
-template <>
-bool decode<bool>(const json& j) {
-  return j.get<bool>();
-}
-template <>
-int decode<int>(const json& j) {
-  return j.get<int>();
-}
-template <>
-glm::vec2 decode<glm::vec2>(const json& j) {
-  const auto f = floatsOf(j, 2);
-  return {f[0], f[1]};
-}
-template <>
-glm::vec3 decode<glm::vec3>(const json& j) {
-  const auto f = floatsOf(j, 3);
-  return {f[0], f[1], f[2]};
-}
-template <>
-glm::vec4 decode<glm::vec4>(const json& j) {
-  const auto f = floatsOf(j, 4);
-  return {f[0], f[1], f[2], f[3]};
-}
-template <>
-glm::mat4 decode<glm::mat4>(const json& j) {
-  const auto f = floatsOf(j, 16);
-  glm::mat4 m;
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) m[c][r] = f[size_t(c * 4 + r)];
-  return m;
-}
-template <>
-std::vector<glm::vec4> decode<std::vector<glm::vec4>>(const json& j) {
-  const auto f = floatsOf(j, 0);
-  if (f.size() % 4) throw Error("a recorded kernel output has the wrong shape");
-  std::vector<glm::vec4> v;
-  for (size_t k = 0; k + 3 < f.size(); k += 4) v.emplace_back(f[k], f[k + 1], f[k + 2], f[k + 3]);
-  return v;
 }
 
 }  // namespace wb::test

@@ -8,6 +8,7 @@
 /// either option a test binary observes directly (the ordinary tests and CI).
 #pragma once
 #include "common/error.hpp"
+#include "common/value_codec.hpp"
 
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
@@ -42,20 +43,6 @@ std::string nextObservationKey();
 /// or an exception rethrown as wb::NotImplemented or wb::Error. A missing key is an error saying
 /// the student's build produced nothing there.
 nlohmann::json observeJson(const std::string& key, const std::function<nlohmann::json()>& produce);
-
-/// Encoders between exercise values and JSON (floats by their bits, so NaN and infinity survive).
-nlohmann::json encode(float v);
-nlohmann::json encode(double v);                         ///< @copydoc encode(float)
-nlohmann::json encode(bool v);                           ///< @copydoc encode(float)
-nlohmann::json encode(int v);                            ///< @copydoc encode(float)
-nlohmann::json encode(const glm::vec2& v);               ///< @copydoc encode(float)
-nlohmann::json encode(const glm::vec3& v);               ///< @copydoc encode(float)
-nlohmann::json encode(const glm::vec4& v);               ///< @copydoc encode(float)
-nlohmann::json encode(const glm::mat4& v);               ///< @copydoc encode(float)
-nlohmann::json encode(const std::vector<glm::vec4>& v);  ///< @copydoc encode(float)
-/// Decodes what encode() wrote; throws wb::Error on malformed data.
-template <class T>
-T decode(const nlohmann::json& j);
 
 /// Observes what `produce` returns: runs it (direct, record) or replays it (judge).
 template <class T>

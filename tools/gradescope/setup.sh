@@ -26,8 +26,9 @@ py=$(glad_python)
 is_glad2 "$py" || fail "${py:-python3} -m glad is not glad 2, which cmake/Glad.cmake runs"
 echo "setup.sh: $py -m glad is glad 2"
 
-# 3. The grading framework, for the labs of this assignment. The tests run as the unprivileged user
-# nobody: it must read the tree and the build.
+# 3. The grading framework, for the labs of this assignment. The student's code is built and run by
+# unprivileged users, which must read build-grade/ (the grader hides the rest of the tree from them
+# while it grades).
 labs=$(tr -d '[:space:]' <gradescope-labs 2>/dev/null || true)
 chmod -R a+rX .
 /usr/bin/python3 tools/grade.py --prepare-only ${labs:+--labs "$labs"} ||

@@ -1,0 +1,92 @@
+#include "common/exercise_tape.hpp"
+
+#include "common/error.hpp"
+#include "common/gl.hpp"
+#include "common/value_codec.hpp"
+
+#include <fstream>
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace wb {
+namespace {
+
+ExerciseState stateFromName(const std::string& name) {
+  for (auto s : {ExerciseState::Implemented, ExerciseState::NotImplemented, ExerciseState::Failed})
+    if (name == stateName(s)) return s;
+  throw Error("unknown exercise state '" + name + "'");
+}
+
+}  // namespace
+
+void ExerciseTape::startRecording(const fs::path& file) { recordFile_ = file; }
+
+void ExerciseTape::startReplay(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw Error("cannot read --replay-exercises file '" + file.string() + "'");
+  try {
+    const json j = json::parse(in);
+    for (const auto& [id, calls] : j.at("calls").items())
+      for (const auto& c : calls)
+        calls_[id].push_back({stateFromName(c.at("state").get<std::string>()), c.value("message", std::string()),
+                              c.value("value", json())});
+  } catch (const std::exception& e) {
+    throw Error("malformed --replay-exercises file '" + file.string() + "': " + e.what());
+  }
+  replaying_ = true;
+}
+
+void ExerciseTape::add(const std::string& id, Call call) {
+  auto& calls = calls_[id];
+  // A run that calls an exercise every frame repeats itself: keep the first calls and the last.
+  if (calls.size() >= 64) calls.pop_back();
+  calls.push_back(std::move(call));
+}
+
+ExerciseTape::Call ExerciseTape::next(const std::string& id) {
+  const auto& calls = calls_.at(id);
+  size_t& k = used_[id];
+  const Call& c = calls[std::min(k, calls.size() - 1)];
+  ++k;
+  return c;
+}
+
+void ExerciseTape::save() const {
+  if (!recording()) return;
+  json all = json::object();
+  for (const auto& [id, calls] : calls_)
+    for (const auto& c : calls)
+      all[id].push_back({{"state", stateName(c.state)}, {"message", c.message}, {"value", c.value}});
+  std::ofstream out(recordFile_);
+  out << json{{"calls", all}}.dump() << "\n";
+  if (!out) throw Error("cannot write --record-exercises file '" + recordFile_.string() + "'");
+}
+
+json captureRasterState() {
+  GLfloat factor = 0, units = 0;
+  GLint cullMode = GL_BACK, frontFace = GL_CCW;
+  glGetFloatv(GL_POLYGON_OFFSET_FACTOR, &factor);
+  glGetFloatv(GL_POLYGON_OFFSET_UNITS, &units);
+  glGetIntegerv(GL_CULL_FACE_MODE, &cullMode);
+  glGetIntegerv(GL_FRONT_FACE, &frontFace);
+  return {{"offset_fill", glIsEnabled(GL_POLYGON_OFFSET_FILL) == GL_TRUE},
+          {"factor", encode(float(factor))},
+          {"units", encode(float(units))},
+          {"cull", glIsEnabled(GL_CULL_FACE) == GL_TRUE},
+          {"cull_mode", cullMode},
+          {"front_face", frontFace}};
+}
+
+void applyRasterState(const json& s) {
+  const GLint mode = s.at("cull_mode").get<GLint>(), front = s.at("front_face").get<GLint>();
+  if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK) throw Error("bad recorded cull mode");
+  if (front != GL_CW && front != GL_CCW) throw Error("bad recorded front face");
+  s.at("offset_fill").get<bool>() ? glEnable(GL_POLYGON_OFFSET_FILL) : glDisable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(decode<float>(s.at("factor")), decode<float>(s.at("units")));
+  s.at("cull").get<bool>() ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
+  glCullFace(GLenum(mode));
+  glFrontFace(GLenum(front));
+}
+
+}  // namespace wb

@@ -1,0 +1,26 @@
+/// @file value_codec.hpp
+/// Exercise values as JSON, exactly: floats by their bits (so NaN, infinity and -0 survive) and
+/// doubles by their 64 bits. The grader's tapes (tests/harness/tape.hpp) and the app's record of
+/// its C++ exercises (exercise_tape.hpp) both use it.
+#pragma once
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include <vector>
+
+namespace wb {
+
+nlohmann::json encode(float v);                          ///< a float by its bits
+nlohmann::json encode(double v);                         ///< a double by its bits, as a string
+nlohmann::json encode(bool v);                           ///< as it is
+nlohmann::json encode(int v);                            ///< as it is
+nlohmann::json encode(const glm::vec2& v);               ///< its floats' bits
+nlohmann::json encode(const glm::vec3& v);               ///< @copydoc encode(const glm::vec2&)
+nlohmann::json encode(const glm::vec4& v);               ///< @copydoc encode(const glm::vec2&)
+nlohmann::json encode(const glm::mat4& v);               ///< column by column
+nlohmann::json encode(const std::vector<glm::vec4>& v);  ///< every float's bits, in order
+/// Decodes what encode() wrote; throws wb::Error on malformed data.
+template <class T>
+T decode(const nlohmann::json& j);
+
+}  // namespace wb
