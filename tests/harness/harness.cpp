@@ -47,6 +47,14 @@ std::vector<uint8_t> diffImage(const FloatImage& ref, const FloatImage& got, flo
   }
   return rgba;
 }
+// An RGBA8 image of w x h, each pixel made 2 x 2.
+std::vector<uint8_t> doubled(const std::vector<uint8_t>& rgba, int w, int h) {
+  std::vector<uint8_t> out(size_t(4 * w * h) * 4);
+  for (int y = 0; y < 2 * h; ++y)
+    for (int x = 0; x < 2 * w; ++x)
+      for (int c = 0; c < 4; ++c) out[(size_t(y) * 2 * w + x) * 4 + c] = rgba[(size_t(y / 2) * w + x / 2) * 4 + c];
+  return out;
+}
 // Where a test's data file lives: `public_dir`/NAME, or for a held-out case ("hidden/NAME") the
 // instructor-only tests/hidden/<lab>/`hidden_dir`/NAME.
 fs::path dataFile(const std::string& name, const fs::path& publicDir, const char* hiddenDir) {
@@ -237,6 +245,9 @@ static ::testing::AssertionResult runIsolated(const std::string& id, const fs::p
   }
   const int code = run.value("code", 128);
   logText = run.value("log", std::string());
+  // A shader error names the isolated copy the app read; the student's own file is what to open.
+  const std::string copy = (out / "exercise.glsl").string(), mine = submittedShaderFile("exercise.glsl").string();
+  for (size_t at; (at = logText.find(copy)) != std::string::npos;) logText.replace(at, copy.size(), mine);
   if (code != 0) {
     // The first line names the cause (a compile error's file:line when there is one).
     std::string cause, last;
@@ -380,9 +391,11 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
   std::printf("[ scene    ] %s: %.3f%% of pixels differ from %s (allowed %.3f%%)\n", name.c_str(), 100 * fraction,
               golden.filename().string().c_str(), 100 * maxFailingFraction);
   if (fraction <= maxFailingFraction) return;
-  writePng(out / "reference.png", ref.width, ref.height, toGrey(ref));
-  writePng(out / "result.png", got.width, got.height, toGrey(got));
-  writePng(out / "diff.png", ref.width, ref.height, diffImage(ref, got, tolerance));
+  // Twice the size, pixel for pixel, so that a one-pixel edge can be seen in an image viewer.
+  writePng(out / "reference.png", 2 * ref.width, 2 * ref.height, doubled(toGrey(ref), ref.width, ref.height));
+  writePng(out / "result.png", 2 * got.width, 2 * got.height, doubled(toGrey(got), got.width, got.height));
+  writePng(out / "diff.png", 2 * ref.width, 2 * ref.height,
+           doubled(diffImage(ref, got, tolerance), ref.width, ref.height));
   std::ostringstream msg;
   if (todo) {
     msg << "NOT IMPLEMENTED: " << todo << " pixels of scene '" << name << "' show the not-implemented placeholder";
@@ -393,7 +406,8 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
     std::snprintf(pct, sizeof pct, "%.2f%% of pixels (allowed %.2f%%)", 100 * fraction, 100 * maxFailingFraction);
     msg << "WRONG: visibility in scene '" << name << "' differs from the reference on " << pct;
   }
-  msg << "\n  diff: " << (out / "diff.png").string() << " (red: extra shadow, blue: missing shadow)"
+  msg << "\n  diff: " << (out / "diff.png").string()
+      << " (red: shadowed where the reference is lit; blue: lit where it is shadowed)"
       << "\n  reference: " << (out / "reference.png").string() << "\n  result: " << (out / "result.png").string();
   FAIL() << msg.str();
 }

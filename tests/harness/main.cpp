@@ -1,5 +1,5 @@
 // main() of every lab's test binary. Besides plain GoogleTest it offers:
-//   --check          print one line per exercise: done / NOT IMPLEMENTED / WRONG / ERROR, with a
+//   --check          print one line per exercise: passes / NOT IMPLEMENTED / WRONG / ERROR, with a
 //                    one-line diagnosis (what `./workbook check NN` shows)
 //   --expect-stubs   like --check, but succeed only if every exercise is NOT IMPLEMENTED (CI runs
 //                    this on the student build to prove the stubs are stubs)
@@ -7,10 +7,13 @@
 //   --runner DIR     record every value the exercises produce on a tape in DIR; decide nothing
 //   --requests F     with --runner: record only the lab runs F asks for (held-out tests; see
 //                    recordRequestedRuns in harness.hpp)
+//   --signatures F   like --check, and write each failing test's value to F (JSON lines), from
+//                    which tools/make_hints.py records the values the mutants' mistakes give
 //   --judge DIR      replay the tape in DIR instead of running any exercise, and decide
 //                    (see tape.hpp: the grader runs the student's build as the runner and the
 //                    solution's as the judge; `./workbook check` runs both the same way)
 #include "common/variant.hpp"
+#include "tests/harness/diagnosis.hpp"
 #include "tests/harness/harness.hpp"
 
 #include <nlohmann/json.hpp>
@@ -53,23 +56,27 @@ std::string exerciseOf(const std::string& testName) {
 // Collects the first failure of each test and prints the per-exercise table at the end.
 class CheckListener : public ::testing::EmptyTestEventListener {
  public:
-  explicit CheckListener(bool expectStubs) : expectStubs_(expectStubs) {}
+  CheckListener(bool expectStubs, std::string signatures)
+      : expectStubs_(expectStubs), signatures_(std::move(signatures)) {}
   int exitCode = 0;
 
-  void OnTestStart(const ::testing::TestInfo& info) override { current_ = exerciseOf(info.name()); }
+  void OnTestStart(const ::testing::TestInfo& info) override {
+    current_ = exerciseOf(info.name());
+    test_ = std::string(info.test_suite_name()) + "." + info.name();
+  }
   void OnTestPartResult(const ::testing::TestPartResult& r) override {
     if (!r.failed()) return;
-    auto& slot = first_[current_];
-    // gtest puts its own text ("Failed", "Value of: ...") before ours; start at our keyword.
-    const std::string full = r.message();
-    size_t at = std::string::npos;
-    for (const char* k : {"NOT IMPLEMENTED", "WRONG", "ERROR"}) at = std::min(at, full.find(k));
-    const std::string msg = at == std::string::npos ? "WRONG: " + full : full.substr(at);
-    // Keep the most serious message of the exercise: ERROR > WRONG > NOT IMPLEMENTED.
-    auto rank = [](const std::string& m) {
-      return m.rfind("ERROR", 0) == 0 ? 3 : m.rfind("NOT IMPLEMENTED", 0) == 0 ? 1 : 2;
+    auto d = wb::test::diagnose(test_, r.message());
+    if (!signatures_.empty() && d.got && !signed_.count(test_)) {
+      signed_.insert(test_);
+      std::ofstream(signatures_, std::ios::app) << nlohmann::json{{"test", test_}, {"value", *d.got}}.dump() << "\n";
+    }
+    // Keep the most serious diagnosis of the exercise: ERROR > WRONG > NOT IMPLEMENTED.
+    auto rank = [](const wb::test::Diagnosis& x) {
+      return x.verdict == "ERROR" ? 3 : x.verdict == "NOT IMPLEMENTED" ? 1 : 2;
     };
-    if (slot.empty() || rank(msg) > rank(slot)) slot = msg;
+    auto& slot = first_[current_];
+    if (slot.verdict.empty() || rank(d) > rank(slot)) slot = std::move(d);
   }
   void OnTestProgramEnd(const ::testing::UnitTest&) override {
     const auto manifest = readManifest();
@@ -81,21 +88,18 @@ class CheckListener : public ::testing::EmptyTestEventListener {
     std::printf("  %-5s %-46s %-16s %s\n", "ID", "exercise", "status", "diagnosis");
     int done = 0;
     for (const auto& e : manifest) {
-      const std::string msg = first_.count(e.id) ? first_[e.id] : "";
-      std::string status = msg.empty()                            ? "done"
-                           : msg.rfind("NOT IMPLEMENTED", 0) == 0 ? "not implemented"
-                           : msg.rfind("ERROR", 0) == 0           ? "error"
+      const wb::test::Diagnosis d = first_.count(e.id) ? first_[e.id] : wb::test::Diagnosis{};
+      const std::string status = d.verdict.empty()                ? "passes its tests"
+                                 : d.verdict == "NOT IMPLEMENTED" ? "not implemented"
+                                 : d.verdict == "ERROR"           ? "error"
                                                                   : "wrong";
-      done += msg.empty();
+      done += d.verdict.empty();
       if (expectStubs_ && status != "not implemented") exitCode = 1;
-      std::string first = msg.substr(0, msg.find('\n'));
-      std::string diff;
-      if (auto at = msg.find("diff: "); at != std::string::npos) diff = msg.substr(at + 6, msg.find('\n', at) - at - 6);
-      std::printf("  %-5s %-46.46s %-16s %s\n", e.id.c_str(), e.title.c_str(), status.c_str(), first.c_str());
-      if (!diff.empty()) std::printf("  %-5s %-46s %-16s diff image: %s\n", "", "", "", diff.c_str());
+      std::printf("  %-5s %-46.46s %-16s %s\n", e.id.c_str(), e.title.c_str(), status.c_str(), d.headline.c_str());
+      for (const auto& line : d.details) std::printf("  %-5s   %s\n", "", line.c_str());
     }
     if (!expectStubs_ && done != int(manifest.size())) exitCode = 1;
-    std::printf("  %d of %zu exercises done.%s\n", done, manifest.size(),
+    std::printf("  %d of %zu exercises pass their tests.%s\n", done, manifest.size(),
                 expectStubs_ ? (exitCode ? " Some stubs are not reported as NOT IMPLEMENTED."
                                          : " Every stub reports NOT IMPLEMENTED.")
                              : "");
@@ -103,8 +107,11 @@ class CheckListener : public ::testing::EmptyTestEventListener {
 
  private:
   bool expectStubs_;
+  std::string signatures_;  // --signatures F: each failing test's value, for tools/make_hints.py
+  std::set<std::string> signed_;
   std::string current_;  // the exercise of the running test
-  std::map<std::string, std::string> first_;
+  std::string test_;     // and the test ("Suite.Name")
+  std::map<std::string, wb::test::Diagnosis> first_;
 };
 
 }  // namespace
@@ -140,13 +147,15 @@ TEST(Manifest, EveryExerciseHasItsMarker) {
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   bool check = false, expectStubs = false;
-  std::string requests;
+  std::string requests, signatures;
   for (int i = 1; i < argc; ++i) {
     const bool runner = !std::strcmp(argv[i], "--runner"), judge = !std::strcmp(argv[i], "--judge");
     if ((runner || judge) && i + 1 < argc)
       wb::test::openTape(runner ? wb::test::TapeMode::Record : wb::test::TapeMode::Replay, argv[++i]);
     else if (!std::strcmp(argv[i], "--requests") && i + 1 < argc)
       requests = argv[++i];
+    else if (!std::strcmp(argv[i], "--signatures") && i + 1 < argc)
+      check = true, signatures = argv[++i];
     else if (!std::strcmp(argv[i], "--check"))
       check = true;
     else if (!std::strcmp(argv[i], "--expect-stubs"))
@@ -156,7 +165,7 @@ int main(int argc, char** argv) {
     else {
       std::fprintf(stderr,
                    "%s: unknown option '%s' (accepted: --check, --expect-stubs, --update-golden, --runner DIR, "
-                   "--requests F, --judge DIR, --gtest_*)\n",
+                   "--requests F, --judge DIR, --signatures F, --gtest_*)\n",
                    argv[0], argv[i]);
       return 2;
     }
@@ -175,7 +184,7 @@ int main(int argc, char** argv) {
   if (!check) return RUN_ALL_TESTS();
   auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
   delete listeners.Release(listeners.default_result_printer());
-  auto* listener = new CheckListener(expectStubs);
+  auto* listener = new CheckListener(expectStubs, signatures);
   listeners.Append(listener);
   const int gtest = RUN_ALL_TESTS();
   return listener->exitCode ? listener->exitCode : (expectStubs ? 0 : gtest);

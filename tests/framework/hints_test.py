@@ -1,0 +1,35 @@
+#!/usr/bin/python3
+"""`check` names each known mistake: usage hints_test.py BUILD_DIR. For every value that
+tests/hints/NN_name.json records for a mutant (tools/make_hints.py), the mutant's own check must
+print that mutant's hint. Fails when the hints are stale (a test or mutant changed since they were
+recorded: run tools/make_hints.py BUILD_DIR) or when the matching in tests/harness/diagnosis.cpp
+breaks."""
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent.parent
+build = Path(sys.argv[1])
+problems, checked = [], 0
+for hints_file in sorted((ROOT / "tests/hints").glob("*.json")):
+    lab = hints_file.stem
+    by_mutant = {}
+    for h in json.loads(hints_file.read_text())["hints"]:
+        by_mutant.setdefault(h["mutant"], h)
+    for mutant in sorted((ROOT / "tests/mutants" / lab).glob("*.mutant")):
+        h = by_mutant.get(mutant.stem)
+        if h is None:
+            print(f"note: {lab}/{mutant.stem} gives no value to recognise it by (no hint)")
+            continue
+        exe = build / f"lab{lab[:2]}_mutant_{mutant.stem}_tests"
+        out = subprocess.run([str(exe), f"--gtest_filter=*Ex{h['exercise'].replace('.', '_')}_*", "--check"],
+                             capture_output=True, text=True, timeout=600).stdout
+        checked += 1
+        if f"looks like a known mistake: {h['hint']}" not in out:
+            problems.append(f"{lab}/{mutant.stem}: check does not name it (stale hints? run tools/make_hints.py "
+                            f"{build}):\n{out[-1500:]}")
+for p in problems:
+    print("FAIL:", p)
+print(f"{checked} mutants: " + ("each named by check" if not problems else f"{len(problems)} not named"))
+sys.exit(1 if problems or not checked else 0)

@@ -1,0 +1,120 @@
+#include "tests/harness/diagnosis.hpp"
+
+#include "common/variant.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace wb::test {
+namespace {
+
+// Paths under the repository (and the build's output) as a student would type them.
+std::string shortPaths(std::string text) {
+  const std::string root = std::string(variant::kSourceDir) + "/";
+  for (size_t at; (at = text.find(root)) != std::string::npos;) text.erase(at, root.size());
+  return text;
+}
+
+std::vector<std::string> linesOf(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);) lines.push_back(l);
+  return lines;
+}
+
+// A number as gtest prints it ("0.66666666666666663"), shortened to 6 significant digits.
+std::string num(const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0') return text;
+  char out[32];
+  std::snprintf(out, sizeof out, "%.6g", v);
+  return out;
+}
+
+// gtest's own account of a failed comparison, as "got X, want Y" with the tolerance.
+std::optional<std::string> gotWant(const std::string& gtest, std::optional<double>& got) {
+  std::smatch m;
+  static const std::regex nearRe(
+      R"(The difference between .+ and .+ is (\S+), which exceeds .+, where\n.+ evaluates to (\S+),\n.+ evaluates to (\S+), and\n.+ evaluates to (\S+)\.)");
+  static const std::regex cmpRe(R"(Expected: \((.+)\) (<|<=|>|>=|!=) \((.+)\), actual: (\S+) vs (\S+))");
+  static const std::regex eqRe(
+      R"(Expected equality of these values:\n  (.+)\n(?:    Which is: (.+)\n)?  (.+)\n(?:    Which is: (.+))?)");
+  if (std::regex_search(gtest, m, nearRe)) {
+    got = std::strtod(m[2].str().c_str(), nullptr);
+    return "got " + num(m[2].str()) + ", want " + num(m[3].str()) + " (allowed difference " + num(m[4].str()) +
+           ", off by " + num(m[1].str()) + ")";
+  }
+  if (std::regex_search(gtest, m, cmpRe)) {
+    got = std::strtod(m[4].str().c_str(), nullptr);
+    return "got " + m[1].str() + " = " + num(m[4].str()) + ", want it " + m[2].str() + " " + num(m[5].str());
+  }
+  if (std::regex_search(gtest, m, eqRe)) {
+    const std::string a = m[2].matched ? m[2].str() : m[1].str(), b = m[4].matched ? m[4].str() : m[3].str();
+    got = std::strtod(a.c_str(), nullptr);
+    return "got " + num(a) + ", want " + num(b);
+  }
+  return std::nullopt;
+}
+
+// The first number in our own WRONG message ("differs ... on 6.85% of pixels"), as a signature.
+std::optional<double> firstNumber(const std::string& text) {
+  static const std::regex num(R"([-+]?\d+\.\d+(?:[eE][-+]?\d+)?)");
+  std::smatch m;
+  if (std::regex_search(text, m, num)) return std::strtod(m[0].str().c_str(), nullptr);
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::string knownMistake(const std::string& test, double got) {
+  static const nlohmann::json hints = [] {
+    std::ifstream in(fs::path(variant::kSourceDir) / "tests/hints" / (std::string(variant::kLab) + ".json"));
+    return in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+  }();
+  if (!hints.is_object() || !hints.contains("hints")) return "";
+  for (const auto& h : hints["hints"]) {
+    if (h.value("test", "") != test || !h.contains("value")) continue;
+    const double want = h["value"].get<double>();
+    if (std::abs(got - want) <= 1e-3 * std::max(1e-6, std::abs(want))) return h.value("hint", "");
+  }
+  return "";
+}
+
+Diagnosis diagnose(const std::string& test, const std::string& message) {
+  Diagnosis d;
+  size_t at = std::string::npos;
+  for (const char* k : {"NOT IMPLEMENTED", "WRONG", "ERROR"}) at = std::min(at, message.find(k));
+  const std::string ours = shortPaths(at == std::string::npos ? "WRONG: " + message : message.substr(at));
+  const std::string gtest = at == std::string::npos ? message : message.substr(0, at);
+  d.verdict = ours.rfind("ERROR", 0) == 0             ? "ERROR"
+              : ours.rfind("NOT IMPLEMENTED", 0) == 0 ? "NOT IMPLEMENTED"
+                                                      : "WRONG";
+  const auto lines = linesOf(ours);
+  d.headline = lines.empty() ? d.verdict : lines[0];
+  // A compile error: the compiler's lines that name a file and line (the student's, first).
+  for (const auto& l : lines)
+    if (l.find(": error") != std::string::npos && d.details.size() < 4 && l != d.headline) d.details.push_back(l);
+  if (d.verdict == "WRONG") {
+    if (const auto gw = gotWant(gtest, d.got)) d.details.push_back(*gw);
+    if (!d.got) d.got = firstNumber(d.headline);
+    if (d.got)
+      if (const std::string hint = knownMistake(test, *d.got); !hint.empty())
+        d.details.push_back("looks like a known mistake: " + hint);
+  }
+  for (const auto& l : lines)
+    if (const auto at = l.find("diff: "); at != std::string::npos && l.find_first_not_of(' ') == at)
+      d.details.push_back("diff image: " + l.substr(at + 6));
+  return d;
+}
+
+}  // namespace wb::test

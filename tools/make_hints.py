@@ -1,0 +1,59 @@
+#!/usr/bin/python3
+"""Records what each known mistake looks like, for `./workbook check`: tools/make_hints.py BUILD_DIR
+
+Every mutant in tests/mutants/NN_name/ is a known mistake, described by its first comment line
+("# Mutant: the depths filtered, then compared once"). Its test binary (built in BUILD_DIR) runs
+its exercise's tests with --signatures, which writes the value each failing test saw. Those values
+and the description go to tests/hints/NN_name.json (public: values and words, no solution code).
+`check` then names the mistake when a student's failing test sees the same value
+(tests/harness/diagnosis.cpp). Run it after changing a mutant or a test, and commit the result.
+"""
+import json
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def describe(mutant):
+    fields, hint = {}, ""
+    for line in mutant.read_text().splitlines():
+        if line.startswith("# Mutant:") and not hint:
+            hint = line.split(":", 1)[1].strip()
+        elif ":" in line and not line.startswith("#"):
+            key, value = line.split(":", 1)
+            fields.setdefault(key.strip(), value.strip())
+    return fields.get("exercise", ""), hint
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit("usage: tools/make_hints.py BUILD_DIR")
+    build = Path(sys.argv[1])
+    for lab_dir in sorted((ROOT / "tests/mutants").iterdir()):
+        hints = []
+        for mutant in sorted(lab_dir.glob("*.mutant")):
+            exercise, hint = describe(mutant)
+            exe = build / f"lab{lab_dir.name[:2]}_mutant_{mutant.stem}_tests"
+            if not exe.exists() or not hint:
+                sys.exit(f"make_hints: {exe} is not built, or {mutant} has no '# Mutant:' line")
+            with tempfile.NamedTemporaryFile("r", suffix=".jsonl") as sig:
+                subprocess.run([str(exe), f"--gtest_filter=*Ex{exercise.replace('.', '_')}_*", "--signatures",
+                                sig.name], capture_output=True, timeout=600)
+                for line in Path(sig.name).read_text().splitlines():
+                    s = json.loads(line)
+                    hints.append({"exercise": exercise, "mutant": mutant.stem, "test": s["test"],
+                                  "value": s["value"], "hint": hint})
+        out = ROOT / "tests/hints" / f"{lab_dir.name}.json"
+        out.parent.mkdir(exist_ok=True)
+        out.write_text(json.dumps({"about": "what known mistakes give; written by tools/make_hints.py",
+                                   "hints": hints}, indent=1) + "\n")
+        found = {h["mutant"] for h in hints}
+        print(f"{out.relative_to(ROOT)}: {len(hints)} values of {len(found)} of "
+              f"{len(list(lab_dir.glob('*.mutant')))} mutants")
+
+
+if __name__ == "__main__":
+    main()
