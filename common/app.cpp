@@ -156,6 +156,12 @@ void App::host(std::unique_ptr<Lab> lab) {
   }
   lab_->init();
   lab_->board_.probe();
+  // A window checks the exercises in the background (a headless run is what the checks start).
+  checks_.reset();
+  if (imgui_) {
+    checks_ = std::make_unique<LiveChecks>(std::string(variant::kLabExe) + "_tests");
+    checks_->start();
+  }
 }
 
 void App::loop() {
@@ -230,7 +236,10 @@ void App::hotReload() {
   // A changed file rebuilds its programs; a failed build keeps the last good program.
   if (frameIndex_ % 15 != 0) return;
   for (auto& p : lab_->programs_) p.reloadIfChanged();
-  if (lab_->board_.probedFilesChanged()) lab_->board_.probe();
+  if (lab_->board_.probedFilesChanged()) {
+    lab_->board_.probe();
+    if (checks_) checks_->start();
+  }
 }
 
 void App::drawLab() {
@@ -267,7 +276,7 @@ void App::presentWindow() {
     lab.lightIndex = std::min(lab.lightIndex, int(lab.scene.lights.size()) - 1);
     lab.ui();
   };
-  drawShell({lab.board_, timers_, lab.programs_, lab.warnings_, lab.settings, size, labUi}, shell_);
+  drawShell({lab.board_, checks_.get(), timers_, lab.programs_, lab.warnings_, lab.settings, size, labUi}, shell_);
   if (shell_.measureRequested) shell_.measureRequested = false, measureNow(true);
   ImGui::Render();
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

@@ -9,6 +9,7 @@
 #include "common/debug_views.hpp"
 #include "common/frame_target.hpp"
 #include "common/gpu_timers.hpp"
+#include "common/live_checks.hpp"
 #include "common/measurement.hpp"
 #include "common/run_record.hpp"
 #include "common/shell_ui.hpp"
@@ -81,7 +82,8 @@ class App {
   SplitScreen split_;
   Measurement measurement_;
   Texture heatmap_;
-  std::unique_ptr<Lab> lab_;  // declared last: destroyed first
+  std::unique_ptr<LiveChecks> checks_;  // the exercises' fast checks, in a window
+  std::unique_ptr<Lab> lab_;            // declared last: destroyed first
 
   ShellState shell_;
   LightView sides_[2];

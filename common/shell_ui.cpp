@@ -10,14 +10,28 @@ namespace {
 
 const ImVec4 kRed(1, 0.4f, 0.4f, 1), kGreen(0.5f, 1, 0.5f, 1), kYellow(1, 0.85f, 0.3f, 1), kGrey(0.7f, 0.7f, 0.7f, 1);
 
-void exerciseRow(const ExerciseStatus& e) {
+void exerciseRow(const ExerciseStatus& e, const LiveChecks* checks,
+                 const std::map<std::string, CheckVerdict>& verdicts) {
   const char* label = "not run yet";
   ImVec4 c = kGrey;
-  if (e.state == ExerciseState::Implemented) label = "done", c = kGreen;
+  if (e.state == ExerciseState::Implemented) label = "implemented, not checked", c = kGrey;
+  const auto v = verdicts.find(e.id);
+  if (e.state == ExerciseState::Implemented && v != verdicts.end() && !(checks && checks->running())) {
+    // The fast checks' word, never "done" for an answer that fails them.
+    if (v->second.status == "passes its tests") label = "passes its checks", c = kGreen;
+    if (v->second.status == "wrong") label = "wrong", c = kRed;
+    if (v->second.status == "error") label = "error", c = kRed;
+    if (v->second.status == "not implemented") label = "not implemented", c = kYellow;
+  }
   if (e.state == ExerciseState::NotImplemented) label = "not implemented", c = kYellow;
   if (e.state == ExerciseState::Failed) label = "error", c = kRed;
-  ImGui::TextColored(c, "%s  %-16s %s", e.id.c_str(), label, e.title.c_str());
+  ImGui::TextColored(c, "%s  %-24s %s", e.id.c_str(), label, e.title.c_str());
   if (!e.message.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.message.c_str());
+  if (c.x == kRed.x && c.y == kRed.y && v != verdicts.end() && e.state == ExerciseState::Implemented) {
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40);
+    ImGui::TextColored(kRed, "      %s", v->second.headline.c_str());
+    ImGui::PopTextWrapPos();
+  }
   if (e.state != ExerciseState::Failed) return;
   // The line that names file:line, if there is one.
   std::string first = e.message.substr(0, e.message.find('\n'));
@@ -37,8 +51,10 @@ void infoPanel(const ShellInput& in, ShellState& state) {
   ImGui::TextColored(kGrey, "%s | %.1f fps | %dx%d", Context::renderer().c_str(), ImGui::GetIO().Framerate,
                      in.frameSize.x, in.frameSize.y);
   ImGui::Separator();
-  ImGui::Text("Exercises (run ./workbook check %s to grade them)", board.number().c_str());
-  for (const auto& e : board.exercises()) exerciseRow(e);
+  ImGui::Text("Exercises (./workbook check %s runs every test)", board.number().c_str());
+  if (in.checks && in.checks->running()) ImGui::TextColored(kGrey, "  checking ...");
+  const auto verdicts = in.checks ? in.checks->verdicts() : std::map<std::string, CheckVerdict>{};
+  for (const auto& e : board.exercises()) exerciseRow(e, in.checks, verdicts);
   if (!in.timers.passes().empty()) {
     ImGui::Separator();
     ImGui::Text("GPU time per pass");
@@ -105,6 +121,7 @@ void drawShell(const ShellInput& in, ShellState& state) {
   infoPanel(in, state);
   ImGui::SetNextWindowPos(ImVec2(float(in.frameSize.x) - 8, 8), ImGuiCond_FirstUseEver, ImVec2(1, 0));
   ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);  // one line until opened: the scene comes first
   ImGui::Begin("Settings", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   ImGui::PushItemWidth(150);
   in.settings.ui();

@@ -6,6 +6,7 @@
 #include "common/command_line.hpp"
 #include "common/exercise_board.hpp"
 #include "common/gpu_timers.hpp"
+#include "common/live_checks.hpp"
 #include "common/shader.hpp"
 
 #include <glm/vec2.hpp>
@@ -32,6 +33,7 @@ struct ShellState {
 /// What the shell reads from the hosted lab this frame.
 struct ShellInput {
   const ExerciseBoard& board;                ///< exercise states
+  const LiveChecks* checks;                  ///< their fast checks' verdicts (nullptr headless)
   const GpuTimers& timers;                   ///< GPU time per pass
   const std::list<Program>& programs;        ///< for their compile errors
   const std::vector<std::string>& warnings;  ///< the lab's warnings

@@ -62,6 +62,7 @@ class CheckListener : public ::testing::EmptyTestEventListener {
 
   void OnTestStart(const ::testing::TestInfo& info) override {
     current_ = exerciseOf(info.name());
+    ran_.insert(current_);
     test_ = std::string(info.test_suite_name()) + "." + info.name();
   }
   void OnTestPartResult(const ::testing::TestPartResult& r) override {
@@ -87,6 +88,7 @@ class CheckListener : public ::testing::EmptyTestEventListener {
       std::printf("\nLab %s: %s build\n", wb::variant::kLab, wb::variant::kName);
     std::printf("  %-5s %-46s %-16s %s\n", "ID", "exercise", "status", "diagnosis");
     int done = 0;
+    nlohmann::json verdicts = nlohmann::json::object();  // WB_CHECK_JSON: for the app's live checks
     for (const auto& e : manifest) {
       const wb::test::Diagnosis d = first_.count(e.id) ? first_[e.id] : wb::test::Diagnosis{};
       const std::string status = d.verdict.empty()                ? "passes its tests"
@@ -96,8 +98,10 @@ class CheckListener : public ::testing::EmptyTestEventListener {
       done += d.verdict.empty();
       if (expectStubs_ && status != "not implemented") exitCode = 1;
       std::printf("  %-5s %-46.46s %-16s %s\n", e.id.c_str(), e.title.c_str(), status.c_str(), d.headline.c_str());
+      if (ran_.count(e.id)) verdicts[e.id] = {{"status", status}, {"headline", d.headline}};
       for (const auto& line : d.details) std::printf("  %-5s   %s\n", "", line.c_str());
     }
+    if (const char* file = std::getenv("WB_CHECK_JSON"); file && *file) std::ofstream(file) << verdicts.dump();
     if (!expectStubs_ && done != int(manifest.size())) exitCode = 1;
     std::printf("  %d of %zu exercises pass their tests.%s\n", done, manifest.size(),
                 expectStubs_ ? (exitCode ? " Some stubs are not reported as NOT IMPLEMENTED."
@@ -109,8 +113,9 @@ class CheckListener : public ::testing::EmptyTestEventListener {
   bool expectStubs_;
   std::string signatures_;  // --signatures F: each failing test's value, for tools/make_hints.py
   std::set<std::string> signed_;
-  std::string current_;  // the exercise of the running test
-  std::string test_;     // and the test ("Suite.Name")
+  std::set<std::string> ran_;  // the exercises that had a test run
+  std::string current_;        // the exercise of the running test
+  std::string test_;           // and the test ("Suite.Name")
   std::map<std::string, wb::test::Diagnosis> first_;
 };
 

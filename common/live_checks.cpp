@@ -1,0 +1,69 @@
+#include "common/live_checks.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace wb {
+
+LiveChecks::LiveChecks(std::string testExe) : exe_(std::move(testExe)) {
+  std::error_code ec;
+  available_ = !exe_.empty() && fs::is_regular_file(exe_, ec);
+}
+
+LiveChecks::~LiveChecks() {
+  quit_ = true;
+  if (thread_.joinable()) thread_.join();
+}
+
+void LiveChecks::start() {
+  if (!available_) return;
+  if (running_) {
+    again_ = true;
+    return;
+  }
+  if (thread_.joinable()) thread_.join();
+  running_ = true;
+  thread_ = std::thread([this] {
+    do {
+      again_ = false;
+      runOnce();
+    } while (again_ && !quit_);
+    running_ = false;
+  });
+}
+
+void LiveChecks::runOnce() {
+  // The layer-1 cases only: no scene (the tests that run the lab app are named Scene or Measured).
+  const fs::path json = fs::temp_directory_path() / ("wb-live-checks-" + std::to_string(::getpid()) + ".json");
+  const std::string cmd = "WB_CHECK_JSON='" + json.string() + "' '" + exe_ +
+                          "' --check '--gtest_filter=-*Scene*:*Measured*:Hidden*:Manifest*' >/dev/null 2>&1";
+  std::system(cmd.c_str());
+  std::map<std::string, CheckVerdict> found;
+  try {
+    std::ifstream in(json);
+    const auto all = nlohmann::json::parse(in);  // (kept alive while iterating)
+    for (const auto& [id, v] : all.items())
+      found[id] = {v.value("status", std::string()), v.value("headline", std::string())};
+  } catch (const std::exception&) {
+    return;  // a run that wrote nothing (the binary crashed): keep the last verdicts
+  }
+  std::error_code ec;
+  fs::remove(json, ec);
+  std::lock_guard<std::mutex> lock(mutex_);
+  verdicts_ = std::move(found);
+}
+
+std::map<std::string, CheckVerdict> LiveChecks::verdicts() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return verdicts_;
+}
+
+}  // namespace wb

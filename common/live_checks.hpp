@@ -1,0 +1,50 @@
+/// @file live_checks.hpp
+/// The lab's fast checks, run in the background while a window is open: the tests of the lab's own
+/// test binary that draw no scene (each exercise's layer-1 cases), started when the window opens
+/// and again whenever an exercise file changes. The info panel shows their verdict, so "implemented"
+/// never reads as "correct": an exercise is "passes its checks", "wrong" with the first failing
+/// case, or "not implemented", and "implemented, not checked" while they run.
+#pragma once
+#include <atomic>
+#include <map>
+#include <mutex>
+#include <string>
+#include <thread>
+
+namespace wb {
+
+/// One exercise's verdict from the checks.
+struct CheckVerdict {
+  std::string status;    ///< "passes its tests", "wrong", "not implemented" or "error" (check's words)
+  std::string headline;  ///< the first failing case, as `./workbook check` says it
+};
+
+/// Runs the checks on a thread of its own; at most one run at a time.
+class LiveChecks {
+ public:
+  /// `testExe`: the lab's test binary (this build's app name + "_tests"); without it, nothing runs.
+  explicit LiveChecks(std::string testExe);
+  ~LiveChecks();
+  LiveChecks(const LiveChecks&) = delete;
+  LiveChecks& operator=(const LiveChecks&) = delete;
+
+  /// Starts a run (or, while one runs, another right after it).
+  void start();
+  /// False when the test binary is not built (./workbook check NN builds it).
+  bool available() const { return available_; }
+  /// True while a run is under way (the verdicts are then those of the file before the change).
+  bool running() const { return running_; }
+  /// The verdicts of the last finished run, by exercise id.
+  std::map<std::string, CheckVerdict> verdicts() const;
+
+ private:
+  void runOnce();
+  std::string exe_;
+  bool available_ = false;
+  std::atomic<bool> running_{false}, again_{false}, quit_{false};
+  std::thread thread_;
+  mutable std::mutex mutex_;
+  std::map<std::string, CheckVerdict> verdicts_;
+};
+
+}  // namespace wb
