@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 
+#include <cctype>
 #include <sstream>
 
 namespace wb {
@@ -44,6 +45,14 @@ long long parseSeed(const std::string& v) {
   throw UsageError("bad --vary '" + v + "': expected a whole number from 0 to 4294967295");
 }
 
+std::string imagePath(const char* option, const std::string& v) {
+  std::string ext = v.size() >= 4 ? v.substr(v.size() - 4) : "";
+  for (auto& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".png" && ext != ".jpg" && (v.size() < 5 || v.substr(v.size() - 5) != ".jpeg"))
+    throw UsageError(std::string("bad ") + option + " '" + v + "': name a .png or .jpg file, e.g. shot.png");
+  return v;
+}
+
 std::pair<std::string, std::vector<std::string>> parseSweep(const std::string& v) {
   const auto eq = v.find('=');
   if (eq == std::string::npos || eq + 1 >= v.size()) throw UsageError("--sweep expects key=v1,v2,..., got '" + v + "'");
@@ -70,8 +79,8 @@ const OptionSpec kOptions[] = {
      [](Options& o, const std::string& v) { o.sets.push_back(v); }},
     {"--frames", "N", "frames to render before writing outputs and exiting",
      [](Options& o, const std::string& v) { o.frames = parseFrames(v); }},
-    {"--screenshot", "F.png", "write the final frame as PNG",
-     [](Options& o, const std::string& v) { o.screenshot = v; }},
+    {"--screenshot", "F.png", "write the final frame as PNG (or JPEG, for a name ending in .jpg)",
+     [](Options& o, const std::string& v) { o.screenshot = imagePath("--screenshot", v); }},
     {"--dump-visibility", "F.pfm", "write per-pixel light visibility (1 lit, 0 shadowed) as a float PFM",
      [](Options& o, const std::string& v) { o.visibility = v; }},
     {"--bench", "F.csv", "time every pass (GPU ms) and the frame (wall ms) over the frames",
@@ -79,7 +88,7 @@ const OptionSpec kOptions[] = {
     {"--metrics", nullptr, "compare with exact (ray-cast) visibility: acne rate and light leak",
      [](Options& o, const std::string&) { o.metrics = true; }},
     {"--heatmap", "F.png", "with --metrics: write acne (red) and leaks (blue) as a picture",
-     [](Options& o, const std::string& v) { o.heatmap = v, o.metrics = true; }},
+     [](Options& o, const std::string& v) { o.heatmap = imagePath("--heatmap", v), o.metrics = true; }},
     {"--sweep", "key=a,b,...",
      "time every combination of the listed settings (repeatable; with --metrics also measure it)",
      [](Options& o, const std::string& v) { o.sweeps.push_back(parseSweep(v)); }},

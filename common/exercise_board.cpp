@@ -79,10 +79,15 @@ bool ExerciseBoard::probedFilesChanged() const {
 }
 
 void ExerciseBoard::printUnfinished() const {
-  for (const auto& e : exercises_)
-    if (e.state == ExerciseState::NotImplemented || e.state == ExerciseState::Failed)
-      std::fprintf(stderr, "Exercise %s (%s) is %s: %s\n", e.id.c_str(), e.title.c_str(),
-                   e.state == ExerciseState::Failed ? "failing" : "not implemented yet", e.message.c_str());
+  for (const auto& e : exercises_) {
+    if (e.state != ExerciseState::NotImplemented && e.state != ExerciseState::Failed) continue;
+    // A stub's message repeats what this line says already ("NOT IMPLEMENTED: exercise 01.1 f"): keep "f".
+    std::string why = e.message;
+    if (const std::string said = "NOT IMPLEMENTED: exercise " + e.id + " "; why.rfind(said, 0) == 0)
+      why = why.substr(said.size()) + " is still the stub";
+    std::fprintf(stderr, "Exercise %s (%s) is %s: %s\n", e.id.c_str(), e.title.c_str(),
+                 e.state == ExerciseState::Failed ? "failing" : "not implemented yet", why.c_str());
+  }
 }
 
 nlohmann::json ExerciseBoard::toJson() const {

@@ -5,15 +5,21 @@
 #include <stb_image_write.h>
 
 #include <algorithm>
+#include <cctype>
 #include <fstream>
 
 namespace wb {
 
 void writePng(const std::filesystem::path& file, int w, int h, const std::vector<uint8_t>& rgba) {
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
-  stbi_flip_vertically_on_write(1);  // GL rows run bottom to top, PNG rows top to bottom
-  if (!stbi_write_png(file.string().c_str(), w, h, 4, rgba.data(), w * 4))
-    throw Error("cannot write " + file.string() + " (is the folder writable?)");
+  stbi_flip_vertically_on_write(1);  // GL rows run bottom to top, image rows top to bottom
+  std::string ext = file.extension().string();
+  for (auto& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  const bool jpg = ext == ".jpg" || ext == ".jpeg";  // what the name says is what is written
+  if (!jpg && ext != ".png") throw UsageError("cannot write '" + file.string() + "': images are .png or .jpg");
+  const int ok = jpg ? stbi_write_jpg(file.string().c_str(), w, h, 4, rgba.data(), 92)
+                     : stbi_write_png(file.string().c_str(), w, h, 4, rgba.data(), w * 4);
+  if (!ok) throw Error("cannot write " + file.string() + " (is the folder writable?)");
 }
 
 void writePfm(const std::filesystem::path& file, const FloatImage& img) {

@@ -16,7 +16,8 @@ struct FloatImage {
   float at(int x, int y) const { return pixels[size_t(y) * width + x]; }
 };
 
-/// Writes RGBA8 pixels (rows bottom to top) as a PNG; throws wb::Error if the file cannot be written.
+/// Writes RGBA8 pixels (rows bottom to top) as a PNG, or a JPEG when the name ends in .jpg or .jpeg;
+/// throws wb::UsageError for another extension and wb::Error if the file cannot be written.
 void writePng(const std::filesystem::path& file, int w, int h, const std::vector<uint8_t>& rgba);
 /// Writes a float image as a greyscale PFM ("Pf", little-endian).
 void writePfm(const std::filesystem::path& file, const FloatImage& image);

@@ -144,6 +144,10 @@ CameraBookmark readCamera(const json& entry, size_t i, const fs::path& file) {
 }
 
 json parseSceneFile(const fs::path& file) {
+  std::error_code ec;
+  if (fs::is_directory(file, ec))
+    throw UsageError("'" + file.string() + "' is a folder, not a scene file; name one of its .json files, e.g. " +
+                     "--scene scenes/depth_map.json");
   std::ifstream in(file);
   if (!in)
     throw UsageError("scene file '" + file.string() + "' not found (scenes live in " +

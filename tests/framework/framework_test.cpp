@@ -163,6 +163,8 @@ TEST(CommandLine, BadInputGetsAClearMessageAndExitCode2) {
       {"--headless --size 12x", "bad --size '12x'"},
       {"--headless --frames 0", "bad --frames '0'"},
       {"--headless --set light.index=5", "has 2 light(s)"},
+      {"--headless --scene " + std::string(wb::variant::kSourceDir) + "/scenes", "is a folder, not a scene file"},
+      {"--headless --screenshot shot.gif", "name a .png or .jpg file"},
   };
   for (const auto& c : cases) {
     const LabResult r = runLab(c.args);
@@ -174,6 +176,23 @@ TEST(CommandLine, BadInputGetsAClearMessageAndExitCode2) {
   const LabResult r = runLab("--headless --scene " + bad.string());
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find("objects[0].size: must be [x, y, z]"), std::string::npos) << r.output;
+}
+
+// A screenshot is written in the format its name says.
+TEST(CommandLine, AJpgScreenshotIsAJpeg) {
+  const fs::path shot = scratch("cli") / "shot.jpg";
+  const LabResult r = runLab("--headless --frames 1 --screenshot " + shot.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream in(shot, std::ios::binary);
+  unsigned char magic[3] = {};
+  in.read(reinterpret_cast<char*>(magic), 3);
+  EXPECT_TRUE(magic[0] == 0xFF && magic[1] == 0xD8 && magic[2] == 0xFF) << "not JPEG bytes";
+}
+
+// A stub's line says it once: "... is not implemented yet: f is still the stub".
+TEST(CommandLine, AStubIsNamedOnce) {
+  const LabResult r = runLab("--headless --frames 1 --screenshot " + (scratch("cli") / "stub.png").string());
+  EXPECT_EQ(r.output.find("not implemented yet: NOT IMPLEMENTED"), std::string::npos) << r.output;
 }
 
 TEST(CommandLine, NoDisplayExplainsAndOffersHeadless) {
