@@ -56,7 +56,11 @@ void App::loadScene(Lab& lab, const Options& o) {
   if (lab.lightIndex >= int(lab.scene.lights.size()))
     throw UsageError("light.index=" + std::to_string(lab.lightIndex) + " but " + path.string() + " has " +
                      std::to_string(lab.scene.lights.size()) + " light(s)");
-  lab.camera.pose = lab.scene.cameras[std::min<size_t>(size_t(lab.bookmark_), lab.scene.cameras.size() - 1)];
+  if (lab.bookmark_ > int(lab.scene.cameras.size()))
+    throw UsageError("camera.bookmark=" + std::to_string(lab.bookmark_) + " but " + path.string() + " has " +
+                     std::to_string(lab.scene.cameras.size()) + " camera bookmark(s), 1 to " +
+                     std::to_string(lab.scene.cameras.size()));
+  lab.camera.pose = lab.scene.cameras[size_t(lab.bookmark_ - 1)];
 }
 
 int App::main(int argc, char** argv, std::unique_ptr<Lab> lab) {
@@ -227,7 +231,7 @@ void App::handleKeys() {
   Lab& lab = *lab_;
   for (int k = 0; k < 9; ++k)
     if (pressed(GLFW_KEY_1 + k) && k < int(lab.scene.cameras.size()))
-      lab.bookmark_ = k, lab.camera.pose = lab.scene.cameras[size_t(k)];
+      lab.bookmark_ = k + 1, lab.camera.pose = lab.scene.cameras[size_t(k)];
   if (pressed(GLFW_KEY_F12) || pressed(GLFW_KEY_P)) screenshotRequested_ = true;
   if (pressed(GLFW_KEY_H)) shell_.hidePanels = !shell_.hidePanels;
 }
@@ -271,8 +275,8 @@ void App::presentWindow() {
   Lab& lab = *lab_;
   const int bookmark = lab.bookmark_;
   auto labUi = [&] {  // the shared settings are applied before the lab's own widgets read them
-    if (lab.bookmark_ != bookmark && lab.bookmark_ < int(lab.scene.cameras.size()))
-      lab.camera.pose = lab.scene.cameras[size_t(lab.bookmark_)];
+    if (lab.bookmark_ != bookmark && lab.bookmark_ <= int(lab.scene.cameras.size()))
+      lab.camera.pose = lab.scene.cameras[size_t(lab.bookmark_ - 1)];
     lab.lightIndex = std::min(lab.lightIndex, int(lab.scene.lights.size()) - 1);
     lab.ui();
   };

@@ -15,12 +15,22 @@
 namespace fs = std::filesystem;
 
 namespace wb {
+
+size_t findMarker(const std::string& text, const std::string& id) {
+  const std::string marker = "// EXERCISE " + id;
+  for (size_t at = text.find(marker); at != std::string::npos; at = text.find(marker, at + 1)) {
+    const size_t after = at + marker.size();
+    if (after == text.size() || std::string(" \t\r\n:").find(text[after]) != std::string::npos) return at;
+  }
+  return std::string::npos;
+}
+
 namespace {
 
 // [begin, end) of the chunk of `id`: from the line with its marker to the next marker or the end.
 std::pair<size_t, size_t> chunk(const std::string& text, const std::string& id) {
   const std::string marker = "// EXERCISE " + id;
-  size_t begin = text.find(marker);
+  size_t begin = findMarker(text, id);
   if (begin == std::string::npos) throw Error("no '" + marker + "' marker in the exercise file");
   begin = text.rfind('\n', begin) == std::string::npos ? 0 : text.rfind('\n', begin) + 1;
   size_t end = text.find("// EXERCISE ", begin + marker.size());
@@ -71,14 +81,19 @@ std::string keepOnlyChunk(const std::string& mine, const std::string& solution, 
     const size_t begin = starts[k], end = k + 1 < starts.size() ? starts[k + 1] : mine.size();
     const size_t marker = mine.find("// EXERCISE ", begin) + 12;
     const std::string id = mine.substr(marker, mine.find_first_of(" \t\r\n:", marker) - marker);
-    if (id == keep || solution.find("// EXERCISE " + id) == std::string::npos) {
+    // Only the exact id (a marker "// EXERCISE 01" is not 01.3's), and only the first marker of it.
+    if (id == keep || findMarker(solution, id) == std::string::npos ||
+        findMarker(mine, id) != mine.find("// EXERCISE ", begin)) {
       out += mine.substr(begin, end - begin);
       continue;
     }
+    // The solution's chunk under a source number of its own, so that a compiler message about it
+    // (the student's chunk can break it, with a #define) is named, never quoted (mapShaderLog).
     const auto [s0, s1] = chunk(solution, id);
-    out += "#line " + std::to_string(lineAt(solution, s0)) + "\n" + solution.substr(s0, s1 - s0);
+    out += "#line " + std::to_string(lineAt(solution, s0)) + " " + std::to_string(kReferenceSource) + "\n" +
+           solution.substr(s0, s1 - s0);
     if (!out.empty() && out.back() != '\n') out += "\n";
-    out += "#line " + std::to_string(lineAt(mine, end)) + "\n";
+    out += "#line " + std::to_string(lineAt(mine, end)) + " " + std::to_string(kThisFileSource) + "\n";
   }
   return out;
 }
@@ -108,7 +123,7 @@ std::string isolatedExerciseSource(const std::string& file, const std::string& i
   // A C++ exercise has no chunk here: its GLSL is all solution, so a GLSL stub never blocks it.
   if (!isGlslExercise(file, id)) return readFile(solution);
   // Fail closed: without this exercise's marker the student's whole file is what is graded.
-  if (mine.find("// EXERCISE " + id) == std::string::npos) return mine;
+  if (findMarker(mine, id) == std::string::npos) return mine;
   // The student's whole file (helpers outside the markers included), with the solution's chunks
   // for the other exercises: a mistake elsewhere then costs only the exercise it is in.
   return keepOnlyChunk(mine, readFile(solution), id);

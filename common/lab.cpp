@@ -26,7 +26,7 @@ Lab::Lab(std::string defaultScene, ShadowKind kind)
   settings.add("alpha.cutoff", alphaCutoff_, 0.0f, 1.0f, "leaf texels with lower alpha are holes and cast no shadow");
   settings.add("light.index", lightIndex, 0, 7, "which light of the scene casts shadows");
   if (kind == ShadowKind::Map) debug_.addTo(settings);
-  settings.add("camera.bookmark", bookmark_, 0, 8, "camera bookmark from the scene file (keys 1-9)");
+  settings.add("camera.bookmark", bookmark_, 1, 9, "camera bookmark of the scene file, 1 = the first (keys 1-9)");
 }
 
 Lab::~Lab() = default;

@@ -171,7 +171,7 @@ class Lab {
   float bias_ = 0.004f;
   bool biasRegistered_ = false;
   float alphaCutoff_ = 0.5f;
-  int bookmark_ = 0;
+  int bookmark_ = 1;  // counted from 1, as the keys are
   std::list<Program> programs_;
   std::vector<std::string> warnings_;
 };

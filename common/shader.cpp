@@ -39,6 +39,7 @@ void expand(const std::string& rawText, const fs::path& origin, const std::strin
   const int index = static_cast<int>(src.files.size());
   src.files.push_back(origin);
   static const std::regex includeRe(R"(^\s*#\s*include\s+\"([^\"]+)\")");
+  static const std::regex thisFileRe("^#line (\\d+) " + std::to_string(kThisFileSource) + "$");
   std::istringstream in(text);
   int line = 0;
   for (std::string s; std::getline(in, s);) {
@@ -58,6 +59,8 @@ void expand(const std::string& rawText, const fs::path& origin, const std::strin
       if (!fs::exists(target)) target = findShaderFile(m[1].str(), path);
       expand(readFile(target), target, "", path, src, out, depth + 1);
       out << "#line " << line + 1 << " " << index << "\n";
+    } else if (std::regex_search(s, m, thisFileRe)) {
+      out << "#line " << m[1].str() << " " << index << "\n";  // (see kThisFileSource)
     } else {
       out << s << "\n";
     }
@@ -109,7 +112,11 @@ std::string mapShaderLog(const std::string& log, const std::vector<fs::path>& fi
     if (std::regex_search(s, m, posRe)) {
       const size_t file = std::stoul(m[1].matched ? m[1].str() : m[4].str());
       const std::string line = m[1].matched ? m[2].str() : m[5].str();
-      if (file < files.size()) s = m.prefix().str() + files[file].string() + ":" + line + m.suffix().str();
+      if (file == size_t(kReferenceSource))
+        s = "(the reference code of another exercise, which your chunk is compiled with): an error there, "
+            "caused by your code (a #define, an unclosed brace?); the message is not shown";
+      else if (file < files.size())
+        s = m.prefix().str() + files[file].string() + ":" + line + m.suffix().str();
     }
     out += s + "\n";
   }

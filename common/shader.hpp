@@ -40,6 +40,11 @@ ShaderSource preprocessShader(const std::string& text, const std::filesystem::pa
                               const std::vector<std::filesystem::path>& path);
 
 /// Rewrites compiler positions such as "2:14(3): error" into "shaders/exercise.glsl:14: error".
+/// GLSL source numbers with a meaning of their own in an exercise file's text: the solution's chunks
+/// that isolation puts in (a message about them is named, not quoted), and "back to this file"
+/// (the preprocessor turns it into the file's own number).
+constexpr int kReferenceSource = 9999;
+constexpr int kThisFileSource = 9998;  ///< @copydoc kReferenceSource
 std::string mapShaderLog(const std::string& log, const std::vector<std::filesystem::path>& files);
 
 /// Compiles and links preprocessed stages; throws wb::Error with every message mapped to file:line.

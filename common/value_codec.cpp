@@ -41,6 +41,7 @@ json encode(int v) { return v; }
 json encode(const glm::vec2& v) { return {bits(v.x), bits(v.y)}; }
 json encode(const glm::vec3& v) { return {bits(v.x), bits(v.y), bits(v.z)}; }
 json encode(const glm::vec4& v) { return {bits(v.x), bits(v.y), bits(v.z), bits(v.w)}; }
+json encode(const glm::dvec2& v) { return {encode(v.x), encode(v.y)}; }
 json encode(const glm::mat4& m) {
   json j = json::array();
   for (int c = 0; c < 4; ++c)
@@ -87,6 +88,11 @@ template <>
 glm::vec4 decode<glm::vec4>(const json& j) {
   const auto f = floatsOf(j, 4);
   return {f[0], f[1], f[2], f[3]};
+}
+template <>
+glm::dvec2 decode<glm::dvec2>(const json& j) {
+  if (!j.is_array() || j.size() != 2) throw Error("a recorded value has the wrong shape");
+  return {decode<double>(j[0]), decode<double>(j[1])};
 }
 template <>
 glm::mat4 decode<glm::mat4>(const json& j) {

@@ -17,6 +17,7 @@ nlohmann::json encode(int v);                            ///< as it is
 nlohmann::json encode(const glm::vec2& v);               ///< its floats' bits
 nlohmann::json encode(const glm::vec3& v);               ///< its floats' bits
 nlohmann::json encode(const glm::vec4& v);               ///< its floats' bits
+nlohmann::json encode(const glm::dvec2& v);              ///< its doubles' bits
 nlohmann::json encode(const glm::mat4& v);               ///< column by column
 nlohmann::json encode(const std::vector<glm::vec4>& v);  ///< every float's bits, in order
 /// Decodes what encode() wrote; throws wb::Error on malformed data.

@@ -306,6 +306,7 @@ class Workspace:
 
     def __init__(self, index, labs, base):
         self.uid = SANDBOX_UID + index  # runs the student's code (when the grader is root)
+        self.heldout_uid = SANDBOX_UID + 100 + index  # and its held-out runs, apart from the visible ones
         self.builder = BUILDER_UID + index  # compiles it
         self.dir = base / f"w{index}"
         self.src = self.dir / "src"
@@ -387,16 +388,20 @@ class Workspace:
         return time.time() - t0
 
     def fresh_outputs(self):
-        """Empties the runner's folders, so nothing one submission's code left there meets the next."""
+        """Empties the runners' folders, so nothing one submission's code left there meets the next:
+        test-output/ is the visible runner's; tapes/ is root's, enterable by both runners, each tape
+        in it its runner's alone."""
         for name in ("test-output", "tapes"):
             shutil.rmtree(self.build / name, ignore_errors=True)
-            own(self.build / name, self.uid)
+        own(self.build / "test-output", self.uid)
+        (self.build / "tapes").mkdir()
+        os.chmod(self.build / "tapes", 0o711)
 
-    def fresh_tape(self, tag):
-        """An empty folder for one runner's tape, its user's alone."""
+    def fresh_tape(self, tag, uid):
+        """An empty folder for one runner's tape, its user's (`uid`) alone."""
         tape = self.build / "tapes" / tag
         shutil.rmtree(tape, ignore_errors=True)
-        own(tape, self.uid)
+        own(tape, uid)
         return tape
 
 
@@ -444,9 +449,15 @@ def run_checked(cmd, what):
 
 
 # --- Exercise chunks (as in common/glsl_harness.cpp) ----------------------------------------------
+def find_marker(text, ex_id):
+    """Where exercise ex_id's marker is: the exact id ("// EXERCISE 01" is not 01.3's), or -1."""
+    m = re.search(r"// EXERCISE " + re.escape(ex_id) + r"(?=[ \t\r\n:]|$)", text)
+    return m.start() if m else -1
+
+
 def chunk(text, ex_id):
     marker = f"// EXERCISE {ex_id}"
-    begin = text.find(marker)
+    begin = find_marker(text, ex_id)
     if begin < 0:
         return None
     begin = text.rfind("\n", 0, begin) + 1
@@ -455,14 +466,14 @@ def chunk(text, ex_id):
     return begin, end
 
 
-REFERENCE_CODE = "reference code of another exercise"
+STUB_CODE = "stub of another exercise"
 
 
-def keep_only_chunks(mine, solution, keep, path):
+def keep_only_chunks(mine, stub, keep, path):
     """The student's whole file (helpers above the first marker included) with every exercise chunk
-    whose id is not in `keep` swapped for the solution's; the file is written at `path`. #line keeps
-    compiler messages on the student's line numbers, and names the solution's chunks REFERENCE_CODE,
-    so that compiler_errors() can leave out what a message would quote of them."""
+    whose id is not in `keep` swapped for the stub's (public code: no solution text is ever compiled
+    with a student's; the judge runs the solution's code for those exercises anyway). The file is
+    written at `path`; #line keeps compiler messages on the student's line numbers."""
     starts = [0 if p == 0 else mine.rfind("\n", 0, p) + 1 for p in
               (m.start() for m in re.finditer(r"// EXERCISE ", mine))]
     out = mine[:starts[0] if starts else len(mine)]
@@ -470,25 +481,18 @@ def keep_only_chunks(mine, solution, keep, path):
         end = starts[k + 1] if k + 1 < len(starts) else len(mine)
         ex_id = re.match(r"[^\s:]+", mine[mine.index("// EXERCISE ", begin) + 12:])
         ex_id = ex_id.group(0) if ex_id else ""
-        theirs = chunk(solution, ex_id) if ex_id and ex_id not in keep else None
+        first = ex_id and mine.rfind("\n", 0, find_marker(mine, ex_id)) + 1 == begin  # the id's first marker
+        theirs = chunk(stub, ex_id) if first and ex_id not in keep else None
         if not theirs:
             out += mine[begin:end]
             continue
-        out += f'#line 1 "{REFERENCE_CODE}"\n' + solution[theirs[0]:theirs[1]]
+        out += f'#line {stub.count(chr(10), 0, theirs[0]) + 1} "{STUB_CODE}"\n' + stub[theirs[0]:theirs[1]]
         out += ("" if out.endswith("\n") else "\n") + f'#line {mine.count(chr(10), 0, end) + 1} "{path}"\n'
     return out
 
 
 def compiler_errors(output, limit=12):
-    """The compiler's error lines. A message about the solution's code that a file graded in isolation
-    holds (your code broke it, e.g. with a #define) is named, never quoted."""
     lines = [l for l in output.splitlines() if re.search(r"error|Error|undefined reference", l)]
-    hid = [l for l in lines if REFERENCE_CODE in l]
-    lines = [l for l in lines if REFERENCE_CODE not in l]
-    if hid:
-        lines.insert(0, f"error: your code breaks the {REFERENCE_CODE} that it is compiled with here "
-                        f"({len(hid)} message{'s' if len(hid) > 1 else ''} about it not shown); a #define or an "
-                        "unclosed brace in your chunk?")
     keep = lines[:limit] or output.strip().splitlines()[-limit:]
     return "\n".join(l[:300] for l in keep)
 
@@ -496,6 +500,29 @@ def compiler_errors(output, limit=12):
 # --- Grading one submission -----------------------------------------------------------------------
 BUILD_TIMED_OUT = "ERROR: the build timed out"
 DEFAULT_BUILD_TIMEOUT = 300  # seconds for one build of a submission's code (--build-timeout)
+
+
+SHARED_TMP = ("/tmp", "/var/tmp", "/dev/shm")
+
+
+def sandbox_owned(path):
+    """True when a sandbox user (uids 61000 to 61599: runners, held-out runners, builders) owns path."""
+    try:
+        return SANDBOX_UID <= os.lstat(path).st_uid < SANDBOX_UID + 600
+    except OSError:
+        return False
+
+
+def sweep_shared_tmp():
+    """Removes what sandbox users left in the world-writable folders, so nothing one submission's code
+    leaves there meets the next one's (a Mesa .drirc, a note for a later student)."""
+    for top in SHARED_TMP:
+        for folder, dirs, files in os.walk(top):
+            for name in files + dirs:
+                p = Path(folder) / name
+                if sandbox_owned(p):
+                    shutil.rmtree(p, ignore_errors=True) if p.is_dir() and not p.is_symlink() else p.unlink(missing_ok=True)
+            dirs[:] = [d for d in dirs if (Path(folder) / d).exists()]
 
 
 def runner_stopped(code, out, timed_out, timeout):
@@ -551,19 +578,19 @@ class Grader:
 
     def compile_lab(self, lab, files):
         """Builds the lab from the student's files. When exercise.cpp does not compile (or its build
-        runs past the time limit), each C++ exercise is tried alone in the solution's file, so an error
+        runs past the time limit), each C++ exercise is tried alone in the stub's file, so an error
         costs only the exercises it is in. Returns {exercise id: compiler message} for the exercises
         that cannot be graded. The student's `files` are already in place."""
         ok, out = self.build_lab(lab)
         if ok:
             return {}
         cpp_ids = [e["id"] for e in lab["exercises"] if e["file"] == "exercise.cpp"]
-        solution = ROOT / "solutions" / lab["name"] / "exercise.cpp"
+        stub = ROOT / "labs" / lab["name"] / "exercise.cpp"
         mine = files.get("exercise.cpp", b"").decode(errors="replace")
         failed, good = {}, {}
-        if "exercise.cpp" not in files or not solution.exists():
+        if "exercise.cpp" not in files or not stub.exists():
             return {i: build_failure(out) for i in cpp_ids} or {e["id"]: build_failure(out) for e in lab["exercises"]}
-        base = solution.read_text()
+        base = stub.read_text()
         for ex_id in cpp_ids:
             if chunk(mine, ex_id) is None:
                 failed[ex_id] = f"the file has no '// EXERCISE {ex_id}' marker any more; keep the markers"
@@ -612,19 +639,26 @@ class Grader:
         runner must record (`held_out`)."""
         runner = self.ws.build / f"lab{lab['nn']}_tests"
         judge = self.ws.judge / f"lab{lab['nn']}_solution_tests"
-        tape = self.ws.fresh_tape(tag)
+        uid = self.ws.heldout_uid if held_out else self.ws.uid  # (held-out inputs: not for a visible run)
+        tape = self.ws.fresh_tape(tag, uid)
         judged = self.ws.judge / "runs" / tag
         shutil.rmtree(judged, ignore_errors=True)
         judged.mkdir(parents=True)
         # WB_VARY_SEED: scene tests turn the scene a little and compare with the solution's render of
-        # the same variation, not with the published golden (tests/harness/harness.cpp).
-        env = dict(os.environ, HOME="/tmp", WB_STRICT_GL="1", WB_VARY_SEED=str(self.vary_seed),
-                   WB_RECORD_SHADERS=str(self.ws.stubs / lab["name"] / "shaders"))
-        jenv = dict(env, WB_SUBMISSION_DIR=str(self.ws.lab_dir(lab["name"])))  # the student's GLSL
-        what = ["--requests", str(self.plan(judge, gfilter, judged, jenv, tape))] if held_out \
+        # the same variation, not with the published golden (tests/harness/harness.cpp). Each
+        # process has a home of its own: nothing in a shared /tmp (a Mesa .drirc) reaches it.
+        env = dict(os.environ, HOME=str(tape), TMPDIR=str(tape), WB_STRICT_GL="1",
+                   WB_VARY_SEED=str(self.vary_seed), WB_RECORD_SHADERS=str(self.ws.stubs / lab["name"] / "shaders"))
+        jenv = dict(env, HOME=str(judged), TMPDIR=str(judged),
+                    WB_SUBMISSION_DIR=str(self.ws.lab_dir(lab["name"])))  # the student's GLSL
+        what = ["--requests", str(self.plan(judge, gfilter, judged, jenv, tape, uid))] if held_out \
             else [f"--gtest_filter={gfilter}"]
         code, out, timed_out = self.sandbox.run([str(runner)] + what + ["--runner", str(tape)], self.timeout,
-                                                env=env, cwd=tape, uid=self.ws.uid)
+                                                env=env, cwd=tape, uid=uid)
+        if held_out:  # the held-out inputs go as soon as they are used, and nothing of them is quoted
+            shutil.rmtree(tape / "inputs", ignore_errors=True)
+            (tape / "requests.jsonl").unlink(missing_ok=True)
+            out = ""
         stopped = runner_stopped(code, out, timed_out, self.timeout)  # shown before what the judge found
         copy_tape(tape, judged / "tape")
         report = judged / "report.json"
@@ -648,7 +682,7 @@ class Grader:
         failures = stopped + failures
         return not failures, failures, out
 
-    def plan(self, judge, gfilter, judged, env, tape):
+    def plan(self, judge, gfilter, judged, env, tape, uid):
         """The judge's planning pass over held-out tests: the lab runs (JSON lines {key, args}) the
         runner must record, written into its tape folder as requests.jsonl, with each input file of
         the instructor's (a held-out scene) copied beside it, since the runner cannot read them."""
@@ -669,7 +703,7 @@ class Grader:
             lines.append(json.dumps(request))
         requests = tape / "requests.jsonl"
         requests.write_text("".join(l + "\n" for l in lines))
-        own(tape, self.ws.uid)
+        own(tape, uid)
         return requests
 
     def grade_exercise(self, lab, e, tests, broken):
@@ -691,10 +725,10 @@ class Grader:
         return ok, failures, kept, hidden_result, has_hidden
 
     def grade_alone(self, lab, e, mine, tests):
-        """Grades C++ exercise `e` with the solution's exercise.cpp and only its own chunk from `mine`."""
-        solution = ROOT / "solutions" / lab["name"] / "exercise.cpp"
-        hybrid = keep_only_chunks(mine, solution.read_text(), {e["id"]}, self.ws.lab_dir(lab["name"]) / "exercise.cpp") \
-            if solution.exists() and chunk(mine, e["id"]) else None
+        """Grades C++ exercise `e` with only its own chunk from `mine` (the stubs for the others)."""
+        stub = ROOT / "labs" / lab["name"] / "exercise.cpp"
+        hybrid = keep_only_chunks(mine, stub.read_text(), {e["id"]}, self.ws.lab_dir(lab["name"]) / "exercise.cpp") \
+            if stub.exists() and chunk(mine, e["id"]) else None
         if hybrid is None:
             return None
         self.ws.place(lab["name"], "exercise.cpp", hybrid.encode())
@@ -725,6 +759,7 @@ class Grader:
             results.problems.append(f"{n} build{'s' if n > 1 else ''} of this submission ran past the build time "
                                     f"limit of {self.build_timeout} s and {'were' if n > 1 else 'was'} stopped: the "
                                     "exercises that could not be built scored 0")
+        sweep_shared_tmp()
         try:
             return results.finish(time.time() - t0)
         finally:
@@ -770,7 +805,7 @@ class Grader:
                     outcome = {i: f.result() for i, f in futures.items()}
                 # A C++ exercise runs in the app with the student's other C++ exercises: when several
                 # fail, one may be failing because of another (a crash, a loop, a wrong light fit).
-                # Each is then graded again in the solution's file with only its own chunk.
+                # Each is then graded again in the stub's file with only its own chunk.
                 cpp_ids = [e["id"] for e in lab["exercises"] if e["file"] == "exercise.cpp"]
                 failing = [i for i in cpp_ids if i in broken or not outcome[i][0]]
                 failed = [e for e in lab["exercises"] if e["id"] in failing and e["id"] not in broken

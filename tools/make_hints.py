@@ -4,7 +4,8 @@
 Every mutant in tests/mutants/NN_name/ is a known mistake, described by its first comment line
 ("# Mutant: the depths filtered, then compared once"). Its test binary (built in BUILD_DIR) runs
 its exercise's tests with --signatures, which writes the value each failing test saw. Those values
-and the description go to tests/hints/NN_name.json (public: values and words, no solution code).
+and the description go to tests/hints/NN_name.json (public: values and words, no solution code),
+and the descriptions to the "Common mistakes" section of labs/NN_name/README.md.
 `check` then names the mistake when a student's failing test sees the same value
 (tests/harness/diagnosis.cpp). Run it after changing a mutant or a test, and commit the result.
 """
@@ -26,6 +27,36 @@ def describe(mutant):
             key, value = line.split(":", 1)
             fields.setdefault(key.strip(), value.strip())
     return fields.get("exercise", ""), hint
+
+
+BEGIN, END = "<!-- common mistakes: written by tools/make_hints.py -->", "<!-- end of common mistakes -->"
+
+
+def handout_section(hints):
+    """The handout's "Common mistakes" list: what `check` names, exercise by exercise."""
+    seen, lines = set(), []
+    for h in sorted(hints, key=lambda h: h["exercise"]):
+        if (h["exercise"], h["hint"]) in seen:
+            continue
+        seen.add((h["exercise"], h["hint"]))
+        lines.append(f"- **{h['exercise']}**: {h['hint']}")
+    return "\n".join([BEGIN, "## Common mistakes",
+                      "`./workbook check` recognises these by the values they give, and names them:", ""] + lines + [END])
+
+
+def write_handout_section(lab, hints):
+    """Puts handout_section() into labs/<lab>/README.md, replacing the last one, before "How to check"."""
+    readme = ROOT / "labs" / lab / "README.md"
+    text = readme.read_text()
+    section = handout_section(hints)
+    if BEGIN in text:
+        text = text[:text.index(BEGIN)] + section + text[text.index(END) + len(END):]
+    elif "## How to check your work" in text:
+        at = text.index("## How to check your work")
+        text = text[:at] + section + "\n\n" + text[at:]
+    else:
+        text = text.rstrip("\n") + "\n\n" + section + "\n"
+    readme.write_text(text)
 
 
 def main():
@@ -50,6 +81,7 @@ def main():
         out.parent.mkdir(exist_ok=True)
         out.write_text(json.dumps({"about": "what known mistakes give; written by tools/make_hints.py",
                                    "hints": hints}, indent=1) + "\n")
+        write_handout_section(lab_dir.name, hints)
         found = {h["mutant"] for h in hints}
         print(f"{out.relative_to(ROOT)}: {len(hints)} values of {len(found)} of "
               f"{len(list(lab_dir.glob('*.mutant')))} mutants")

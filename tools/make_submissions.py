@@ -35,6 +35,9 @@ The red team (cheats score zero; honest oddities score full marks):
   write_other          full, with C++ that tries to write a file into every folder it can reach
                        (other students' results, tapes, builds): full marks, and no such file
                        anywhere once grading ends
+  drirc_poison         full, with C++ that leaves a Mesa configuration in /tmp/.drirc which would
+                       stop the judge's OpenGL context: full marks, and every later submission too
+  tests/grading/redteam/*  cheats a reviewer wrote (see its README), when lab 01 is in the class
 
 DIR/expected.json gives the score each should get and the exercises it should lose, computed from
 labs/*/exercises.json: the grader is held against it by tests/grading.
@@ -210,6 +213,21 @@ const int intruded = [] {
 """
 
 
+DRIRC = r"""
+#include <fstream>
+namespace {
+// Leaves a Mesa configuration where a process with HOME=/tmp would read it: the solution's app,
+// without compute shaders, cannot make the OpenGL 4.5 context the judge needs.
+const int poisoned = [] {
+  std::ofstream("/tmp/.drirc") << "<driconf><device><application name=\"judge\" executable=\"lab01_solution\">"
+                                  "<option name=\"mesa_extension_override\" value=\"-GL_ARB_compute_shader\" />"
+                                  "</application></device></driconf>\n";
+  return 0;
+}();
+}  // namespace
+"""
+
+
 def red_team(out, full, expect, cpp, glsl, points, the_labs):
     """The cheats and the honest oddities (see the module's doc)."""
     lab, e_cpp = cpp
@@ -258,6 +276,17 @@ def red_team(out, full, expect, cpp, glsl, points, the_labs):
     expect("leak_secrets", [])
     prepend(full("write_other"), lab, e_cpp["file"], INTRUDER)
     expect("write_other", [])
+    prepend(full("drirc_poison"), lab, e_cpp["file"], DRIRC)
+    expect("drirc_poison", [])
+    fixtures = ROOT / "tests/grading/redteam"
+    for fixture in sorted(p for p in fixtures.iterdir() if (p / "expect.json").exists()) if fixtures.is_dir() else []:
+        fixture_labs = [d.name for d in (fixture / "labs").iterdir()]
+        if not all(l in dict(the_labs) for l in fixture_labs):
+            continue
+        write_tree(out / fixture.name, lambda name: ROOT / "labs" / name, the_labs)  # stubs for the other labs
+        shutil.copytree(fixture / "labs", out / fixture.name / "labs", dirs_exist_ok=True)
+        lost = json.loads((fixture / "expect.json").read_text())["lost"]
+        expect(fixture.name, lost + [e["id"] for name, ex in the_labs if name not in fixture_labs for e in ex])
 
 
 def main():

@@ -8,7 +8,7 @@ shot() { local exe=$1 name=$2; shift 2; "$exe" --headless --size 640x360 --scree
 shot "$solution" directional
 shot "$solution" spot_debug_views --set light.index=1 --set debug.shadow_map=true --set debug.frustum=true
 shot "$solution" view_from_light --set debug.view=light --set debug.shadow_map=true
-shot "$solution" tree_alpha_tested --set camera.bookmark=1
-shot "$solution" tree_solid_quads --set camera.bookmark=1 --set alpha.cutoff=0
-shot "$solution" no_bias --set shadow.bias=0 --set camera.bookmark=2
+shot "$solution" tree_alpha_tested --set camera.bookmark=2
+shot "$solution" tree_solid_quads --set camera.bookmark=2 --set alpha.cutoff=0
+shot "$solution" no_bias --set shadow.bias=0 --set camera.bookmark=3
 shot "$student" lab01_stubs 2>/dev/null

@@ -7,10 +7,10 @@ mkdir -p "$out"
 shot() { local name=$1; shift; "$solution" --headless --size 640x360 --screenshot "$out/$name.png" "$@" >/dev/null 2>&1; echo "wrote $out/$name.png"; }
 table() { local name=$1; shift; "$solution" --headless "$@" --sweep-csv "$out/$name.csv" 2>/dev/null | grep '^|' > "$out/$name.md"; echo "wrote $out/$name.md"; }
 
-shot esm_c80 --set camera.bookmark=1 --set prefilter.kernel=5
-shot esm_c10 --set camera.bookmark=1 --set esm.c=10 --set prefilter.kernel=5
+shot esm_c80 --set camera.bookmark=2 --set prefilter.kernel=5
+shot esm_c10 --set camera.bookmark=2 --set esm.c=10 --set prefilter.kernel=5
 shot esm_fp16 --set esm.format=fp16
-shot esm_c_split --set camera.bookmark=2 --compare esm.c=10,80
+shot esm_c_split --set camera.bookmark=3 --compare esm.c=10,80
 "$student" --headless --size 640x360 --screenshot "$out/lab04_stubs.png" >/dev/null 2>&1 && echo "wrote $out/lab04_stubs.png"
 
 # Leaking against the exponent, measured against exact visibility (480x270).

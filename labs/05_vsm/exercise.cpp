@@ -6,10 +6,11 @@
 namespace lab05 {
 
 // EXERCISE 05.4
-double threePlaneBleeding([[maybe_unused]] double t) {
-  throw wb::NotImplemented("05.4 threePlaneBleeding");
-  // Hints: with half the filter at a and half at b, mu = (a + b) / 2 and sigma^2 = (b - a)^2 / 4.
-  // Put them into Chebyshev's bound for the receiver c and write the result with t alone.
+glm::dvec2 worstThreePlaneBleeding([[maybe_unused]] double t) {
+  throw wb::NotImplemented("05.4 worstThreePlaneBleeding");
+  // Hints: with a fraction m of the taps at a and 1 - m at b, mu = m a + (1 - m) b and
+  // sigma^2 = m (1 - m) (b - a)^2. Put them into Chebyshev's bound for c, write it with t and m
+  // alone (divide by (c - b)^2), and find the m where its derivative is zero.
 }
 
 }  // namespace lab05

@@ -34,7 +34,7 @@ class VsmLab : public wb::Lab {
     glslExercise("05.1", "exercise.glsl", "vsmMoments(0.5, 0.0, 0.0).x");
     glslExercise("05.2", "exercise.glsl", "chebyshevUpperBound(vec2(0.5, 0.3), 0.6, 0.0)");
     glslExercise("05.3", "exercise.glsl", "reduceLightBleeding(0.5, 0.2)");
-    attempt("05.4", [] { lab05::threePlaneBleeding(1.0); });
+    attempt("05.4", [] { lab05::worstThreePlaneBleeding(1.0); });
     if (printExperiments) runExperiments(true);
   }
 
@@ -61,9 +61,9 @@ class VsmLab : public wb::Lab {
     if (!ImGui::CollapsingHeader("experiments")) return;
     if (ImGui::Button("run the experiments")) runExperiments(false);
     if (measured.empty()) return;
-    ImGui::Text("three planes: bleeding on c against t = (b-a)/(c-b)");
+    ImGui::Text("three planes: the worst bleeding on c against t = (b-a)/(c-b)");
     ImGui::PlotLines("measured", measured.data(), int(measured.size()), 0, nullptr, 0, 0.5f, ImVec2(0, 60));
-    ImGui::PlotLines("t^2/(2t^2+4t+4)", formula.data(), int(formula.size()), 0, nullptr, 0, 0.5f, ImVec2(0, 60));
+    ImGui::PlotLines("your 05.4", formula.data(), int(formula.size()), 0, nullptr, 0, 0.5f, ImVec2(0, 60));
     ImGui::Text("two parallel planes: largest |VSM - box PCF| = %.2e", vsmVsPcf);
   }
 
@@ -90,13 +90,15 @@ class VsmLab : public wb::Lab {
       glGetTextureSubImage(synthetic.texture(), 0, x, size / 2, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, sizeof v, &v);
       return glm::vec2(v);
     };
-    // Three planes: a = 0.2 and b = 0.3 each cover half the filter at the edge (the mean of texels
-    // 31 and 32 after a 7-wide box is exactly half and half); the receiver c = b + (b - a) / t.
+    // Three planes: a = 0.2 left of the edge, b = 0.3 from it on, the receiver c = b + (b - a) / t.
+    // After a 7-wide box, texel split - 4 + k mixes 7 - k taps of a with k of b (k = 1..6): the
+    // worst measured over them approaches the worst over every mix (05.4) from below.
     const float ts[] = {0.25f, 0.5f, 1, 2, 4, 8};
     std::vector<glm::vec4> inputs;
     makeMap(0.2f, 0.3f);
-    const glm::vec2 halfAndHalf = 0.5f * (texel(split - 1) + texel(split));
-    for (float t : ts) inputs.emplace_back(halfAndHalf, 0.3f + 0.1f / t, 0.0f);
+    for (float t : ts)
+      for (int k = 1; k <= 6; ++k) inputs.emplace_back(texel(split - 4 + k), 0.3f + 0.1f / t, 0.0f);
+    const size_t planes = inputs.size();
     // Two planes: an occluder at 0.3 over a receiver plane at 0.6; texels 29..35 see 1..7 of the
     // 7 taps on the receiver, so box PCF for a receiver on that plane is exactly (x - 28) / 7.
     makeMap(0.3f, 0.6f);
@@ -113,20 +115,22 @@ class VsmLab : public wb::Lab {
     measured.clear(), formula.clear();
     if (print)
       std::printf(
-          "three planes (a = 0.2, b = 0.3, c = b + (b - a) / t), 7-wide box filter:\n| t | measured | t^2/(2t^2+4t+4) "
-          "|\n|---|---|---|\n");
+          "three planes (a = 0.2, b = 0.3, c = b + (b - a) / t), 7-wide box filter:\n| t | measured worst (mixes k/7) "
+          "| 05.4: worst | 05.4: at mix |\n|---|---|---|---|\n");
     for (size_t k = 0; k < std::size(ts); ++k) {
-      double f = -1;
-      attempt("05.4", f, [&] { return lab05::threePlaneBleeding(ts[k]); });
-      measured.push_back(out[k].x), formula.push_back(float(f));
-      if (print) std::printf("| %g | %.5f | %.5f |\n", ts[k], out[k].x, f);
+      float worst = 0;
+      for (size_t j = 0; j < 6; ++j) worst = std::max(worst, out[k * 6 + j].x);
+      glm::dvec2 predicted(-1);
+      attempt("05.4", predicted, [&] { return lab05::worstThreePlaneBleeding(ts[k]); });
+      measured.push_back(worst), formula.push_back(float(predicted.y));
+      if (print) std::printf("| %g | %.5f | %.5f | %.4f |\n", ts[k], worst, predicted.y, predicted.x);
     }
     vsmVsPcf = 0;
     if (print)
       std::printf(
           "two parallel planes (occluder 0.3, receiver 0.6), 7-wide box filter:\n| texel | box PCF | VSM "
           "|\n|---|---|---|\n");
-    for (int x = split - 3, k = int(std::size(ts)); x <= split + 3; ++x, ++k) {
+    for (int x = split - 3, k = int(planes); x <= split + 3; ++x, ++k) {
       const float pcf = float(x - (split - 4)) / 7.0f;
       vsmVsPcf = std::max(vsmVsPcf, std::abs(out[size_t(k)].x - pcf));
       if (print) std::printf("| %d | %.5f | %.5f |\n", x, pcf, out[size_t(k)].x);

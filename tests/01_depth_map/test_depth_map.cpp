@@ -184,7 +184,7 @@ const float kTol = 0.5f;
 const double kMaxFraction = 0.005;
 const std::vector<std::string> kDirectional = {"--set", "light.index=0"};
 const std::vector<std::string> kSpot = {"--set", "light.index=1"};
-const std::vector<std::string> kTree = {"--set", "light.index=0", "--set", "camera.bookmark=1"};
+const std::vector<std::string> kTree = {"--set", "light.index=0", "--set", "camera.bookmark=2"};
 }  // namespace
 
 TEST(Lab01, Ex01_1_SceneDirectional) {

@@ -165,6 +165,8 @@ TEST(CommandLine, BadInputGetsAClearMessageAndExitCode2) {
       {"--headless --set light.index=5", "has 2 light(s)"},
       {"--headless --scene " + std::string(wb::variant::kSourceDir) + "/scenes", "is a folder, not a scene file"},
       {"--headless --screenshot shot.gif", "name a .png or .jpg file"},
+      {"--headless --set camera.bookmark=8", "camera bookmark(s), 1 to"},
+      {"--headless --set camera.bookmark=0", "bad value '0' for camera.bookmark"},
   };
   for (const auto& c : cases) {
     const LabResult r = runLab(c.args);

@@ -29,6 +29,11 @@ for hints_file in sorted((ROOT / "tests/hints").glob("*.json")):
         if f"looks like a known mistake: {h['hint']}" not in out:
             problems.append(f"{lab}/{mutant.stem}: check does not name it (stale hints? run tools/make_hints.py "
                             f"{build}):\n{out[-1500:]}")
+    readme = (ROOT / "labs" / lab / "README.md").read_text()
+    for h in by_mutant.values():
+        if h["hint"] not in readme:
+            problems.append(f"labs/{lab}/README.md: its Common mistakes section lacks '{h['hint']}' (run "
+                            f"tools/make_hints.py {build})")
 for p in problems:
     print("FAIL:", p)
 print(f"{checked} mutants: " + ("each named by check" if not problems else f"{len(problems)} not named"))

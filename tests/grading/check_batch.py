@@ -69,9 +69,13 @@ check((grades / "summary.md").exists(), "no summary.md")
 
 # Nothing leaked: no line of a solution file in any student's results, and no result file swollen
 # by a submission's output.
-solution_lines = {l.strip() for f in (root / "solutions").rglob("*") if f.is_file()
-                  for l in f.read_text(errors="replace").splitlines()
-                  if len(l.strip()) > 30 and not l.strip().startswith("//")}
+def lines_of(folder):
+    return {l.strip() for f in folder.rglob("*") if f.is_file() for l in f.read_text(errors="replace").splitlines()
+            if len(l.strip()) > 30 and not l.strip().startswith("//")}
+
+
+# (a line the stubs have too is public: a signature, an include)
+solution_lines = lines_of(root / "solutions") - lines_of(root / "labs")
 for name in expected:
     results_file = grades / name / "results.json"
     if not results_file.exists():
@@ -81,13 +85,19 @@ for name in expected:
     leaked = [l for l in solution_lines if l in text]
     check(not leaked, f"{name}: results.json shows solution code: {leaked[:2]}")
     # The held-out tests and their scenes likewise (leak_secrets throws whatever it could read).
-    check("LEAKED" not in text, f"{name}: results.json shows a file its code read: {text[text.find('LEAKED'):][:200]}")
+    for mark in ("LEAKED", "HELDOUT ", "REQUEST "):
+        check(mark not in text, f"{name}: results.json shows a file its code read: {text[text.find(mark):][:200]}")
 
 # Nothing a runner wrote landed outside its own folders (write_other tries every folder it can reach).
 own = ("/tapes/", "/test-output/")  # the runner's own folders (emptied for the next submission)
 intruded = [str(p) for base in (grades, subs, root) for p in base.rglob("WB_INTRUDER")
             if not ("build-grade/w" in str(p) and any(o in str(p) for o in own))]
 check(not intruded, f"a runner wrote into folders not its own: {intruded[:5]}")
+# Nor is anything of theirs left in the shared temporary folders (a .drirc for the judge, a note for
+# the next student): the grader sweeps them after each submission.
+left = [str(p) for top in ("/tmp", "/var/tmp", "/dev/shm") for p in Path(top).rglob("*")
+        if p.exists() and 61000 <= p.lstat().st_uid < 61600] if os.geteuid() == 0 else []
+check(not left, f"files of the sandbox users outlived grading in a shared folder: {left[:5]}")
 
 # Every process a grading run started has ended (the sandbox's users are 61000 and up).
 if os.geteuid() == 0:

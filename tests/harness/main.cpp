@@ -12,6 +12,7 @@
 //   --judge DIR      replay the tape in DIR instead of running any exercise, and decide
 //                    (see tape.hpp: the grader runs the student's build as the runner and the
 //                    solution's as the judge; `./workbook check` runs both the same way)
+#include "common/glsl_harness.hpp"
 #include "common/variant.hpp"
 #include "tests/harness/diagnosis.hpp"
 #include "tests/harness/harness.hpp"
@@ -144,7 +145,7 @@ TEST(Manifest, EveryExerciseHasItsMarker) {
   for (const auto& e : readManifest()) {
     std::ifstream in(fs::path(wb::variant::kLabDir) / e.file);
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    EXPECT_NE(text.find("// EXERCISE " + e.id), std::string::npos)
+    EXPECT_NE(wb::findMarker(text, e.id), std::string::npos)
         << "WRONG: labs/" << wb::variant::kLab << "/" << e.file << " has no '// EXERCISE " << e.id << "' marker";
   }
 }
