@@ -262,6 +262,22 @@ void App::drawLab() {
         if (programsOk) lab.render();
       },
       [&](int side) { sides_[side] = lab.light_; });
+  if (!programsOk) {  // a window whose shaders never compiled says so on the frame, not just sky
+    const auto bad = std::find_if(lab.programs_.begin(), lab.programs_.end(), [](const Program& p) { return !p.ok(); });
+    std::string where = bad->error().substr(0, bad->error().find('\n'));
+    if (const auto at = bad->error().find(": error"); at != std::string::npos) {
+      const size_t begin = bad->error().rfind('\n', at) == std::string::npos ? 0 : bad->error().rfind('\n', at) + 1;
+      where = bad->error().substr(begin, bad->error().find('\n', at) - begin);
+    }
+    if (const std::string root = std::string(variant::kSourceDir) + "/"; where.rfind(root, 0) == 0)
+      where = where.substr(root.size());
+    target_.bind();
+    const glm::ivec2 size = target_.size();
+    const std::string said = "The shaders do not compile: nothing is drawn until they do (save a fix).";
+    const float scale = std::min(Label::scaleToFit(said, size.x - 32), Label::scaleToFit(where, size.x - 32));
+    label_.draw(said, {16, size.y - int(44 * scale)}, size, scale);  // below the panels, which say it too
+    label_.draw(where, {16, size.y - int(22 * scale)}, size, scale);
+  }
 }
 
 void App::presentWindow() {

@@ -9,6 +9,7 @@
 #include "common/debug_views.hpp"
 #include "common/frame_target.hpp"
 #include "common/gpu_timers.hpp"
+#include "common/label.hpp"
 #include "common/live_checks.hpp"
 #include "common/measurement.hpp"
 #include "common/run_record.hpp"
@@ -82,6 +83,7 @@ class App {
   SplitScreen split_;
   Measurement measurement_;
   Texture heatmap_;
+  Label label_;                         // text burnt into the frame (a shader error at start-up)
   std::unique_ptr<LiveChecks> checks_;  // the exercises' fast checks, in a window
   std::unique_ptr<Lab> lab_;            // declared last: destroyed first
 

@@ -5,10 +5,22 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+
 namespace wb {
 namespace {
 
 const ImVec4 kRed(1, 0.4f, 0.4f, 1), kGreen(0.5f, 1, 0.5f, 1), kYellow(1, 0.85f, 0.3f, 1), kGrey(0.7f, 0.7f, 0.7f, 1);
+
+// The line of a compiler's message that names file:line ("...exercise.glsl:13: error: ..."), or its
+// first line.
+std::string firstErrorLine(const std::string& message) {
+  if (const auto at = message.find(": error"); at != std::string::npos) {
+    const size_t begin = message.rfind('\n', at) == std::string::npos ? 0 : message.rfind('\n', at) + 1;
+    return message.substr(begin, message.find('\n', at) - begin);
+  }
+  return message.substr(0, message.find('\n'));
+}
 
 void exerciseRow(const ExerciseStatus& e, const LiveChecks* checks,
                  const std::map<std::string, CheckVerdict>& verdicts) {
@@ -24,7 +36,7 @@ void exerciseRow(const ExerciseStatus& e, const LiveChecks* checks,
     if (v->second.status == "not implemented") label = "not implemented", c = kYellow;
   }
   if (e.state == ExerciseState::NotImplemented) label = "not implemented", c = kYellow;
-  if (e.state == ExerciseState::Failed) label = "error", c = kRed;
+  if (e.state == ExerciseState::Failed) label = "error (see below)", c = kRed;
   ImGui::TextColored(c, "%s  %-24s %s", e.id.c_str(), label, e.title.c_str());
   if (!e.message.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.message.c_str());
   if (c.x == kRed.x && c.y == kRed.y && v != verdicts.end() && e.state == ExerciseState::Implemented) {
@@ -33,12 +45,9 @@ void exerciseRow(const ExerciseStatus& e, const LiveChecks* checks,
     ImGui::PopTextWrapPos();
   }
   if (e.state != ExerciseState::Failed) return;
-  // The line that names file:line, if there is one.
-  std::string first = e.message.substr(0, e.message.find('\n'));
-  if (auto at = e.message.find(": error"); at != std::string::npos) {
-    const size_t begin = e.message.rfind('\n', at) + 1;
-    first = e.message.substr(begin, e.message.find('\n', at) - begin);
-  }
+  // A compile error is shown once, under the exercises; a row says nothing more about it.
+  const std::string first = firstErrorLine(e.message);
+  if (first.find(": error") != std::string::npos) return;
   ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40);
   ImGui::TextColored(kRed, "      %s", first.c_str());
   ImGui::PopTextWrapPos();
@@ -55,9 +64,7 @@ void infoPanel(const ShellInput& in, ShellState& state) {
   if (in.checks && in.checks->running()) ImGui::TextColored(kGrey, "  checking ...");
   const auto verdicts = in.checks ? in.checks->verdicts() : std::map<std::string, CheckVerdict>{};
   for (const auto& e : board.exercises()) exerciseRow(e, in.checks, verdicts);
-  if (!in.timers.passes().empty()) {
-    ImGui::Separator();
-    ImGui::Text("GPU time per pass");
+  if (!in.timers.passes().empty() && ImGui::CollapsingHeader("GPU time per pass")) {  // closed at first
     for (const auto& [name, s] : in.timers.passes()) ImGui::Text("  %-12s %7.3f ms", name.c_str(), s.last);
   }
   ImGui::Separator();
@@ -67,14 +74,21 @@ void infoPanel(const ShellInput& in, ShellState& state) {
     ImGui::Checkbox("heatmap", &state.showHeatmap);
     ImGui::TextUnformatted(state.measured.c_str());
   }
-  for (const auto& p : in.programs)
-    if (!p.error().empty()) {
-      ImGui::Separator();
-      ImGui::TextColored(kRed, "Shader error (the last good version is still running):");
-      ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40);
-      ImGui::TextUnformatted(p.error().c_str());
-      ImGui::PopTextWrapPos();
-    }
+  // Each distinct shader error once (one broken exercise.glsl breaks every program that includes
+  // it), with what is on screen meanwhile.
+  std::vector<std::string> shown;
+  for (const auto& p : in.programs) {
+    const std::string where = firstErrorLine(p.error());
+    if (p.error().empty() || std::find(shown.begin(), shown.end(), where) != shown.end()) continue;
+    shown.push_back(where);
+    ImGui::Separator();
+    ImGui::TextColored(kRed, p.ok() ? "Shader error (the last good version is still drawn):"
+                                    : "Shader error (nothing compiled yet: this pass draws nothing):");
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40);
+    ImGui::TextColored(kRed, "  %s", where.c_str());
+    ImGui::PopTextWrapPos();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", p.error().c_str());
+  }
   for (const auto& w : in.warnings) ImGui::TextColored(kYellow, "warning: %s", w.c_str());
   if (!state.lastScreenshot.empty()) ImGui::TextColored(kGrey, "saved %s", state.lastScreenshot.c_str());
   ImGui::TextColored(kGrey, "drag: orbit | wheel: zoom | 1-9: bookmarks | H: hide panels | F12: screenshot");

@@ -36,6 +36,10 @@ void SplitScreen::render(FrameTarget& target, Settings& settings, const CompareC
   const float white[4] = {1, 1, 1, 1};
   glClearBufferfv(GL_COLOR, 0, white);
   glDisable(GL_SCISSOR_TEST);
+  // Each half says what it shows, in the picture itself (a headless screenshot has no panels).
+  const float scale = size.y >= 400 ? 2.0f : 1.0f;
+  label_.draw(choice.key + " = " + choice.a, {8, size.y - int(24 * scale)}, size, scale);
+  label_.draw(choice.key + " = " + choice.b, {half + 8, size.y - int(24 * scale)}, size, scale);
 }
 
 }  // namespace wb

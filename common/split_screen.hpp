@@ -1,10 +1,11 @@
 /// @file split_screen.hpp
 /// Split-screen comparison of one setting: the frame is drawn twice, with value A kept in the left
-/// half and value B in the right, and a white divider between them.
+/// half and value B in the right, a white divider between them, and each half's value written in it.
 #pragma once
 #include "common/command_line.hpp"
 #include "common/frame_target.hpp"
 #include "common/gl.hpp"
+#include "common/label.hpp"
 
 #include <functional>
 
@@ -23,6 +24,7 @@ class SplitScreen {
  private:
   Texture saved_[3];  // the left half's attachments while the right half is drawn
   glm::ivec2 savedSize_{0};
+  Label label_;  // each half's value, in the frame
 };
 
 }  // namespace wb

@@ -476,7 +476,8 @@ def keep_only_chunks(mine, stub, keep, path):
     written at `path`; #line keeps compiler messages on the student's line numbers."""
     starts = [0 if p == 0 else mine.rfind("\n", 0, p) + 1 for p in
               (m.start() for m in re.finditer(r"// EXERCISE ", mine))]
-    out = mine[:starts[0] if starts else len(mine)]
+    # (the stubs throw wb::NotImplemented, which the student's own includes may not declare)
+    out = f'#include "common/error.hpp"\n#line 1 "{path}"\n' + mine[:starts[0] if starts else len(mine)]
     for k, begin in enumerate(starts):
         end = starts[k + 1] if k + 1 < len(starts) else len(mine)
         ex_id = re.match(r"[^\s:]+", mine[mine.index("// EXERCISE ", begin) + 12:])
