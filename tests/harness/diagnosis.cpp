@@ -84,6 +84,10 @@ std::string knownMistake(const std::string& test, double got) {
   if (!hints.is_object() || !hints.contains("hints")) return "";
   for (const auto& h : hints["hints"]) {
     if (h.value("test", "") != test || !h.contains("value")) continue;
+    if (h["value"].is_null()) {  // a NaN (JSON has none): a division by zero, say
+      if (std::isnan(got)) return h.value("hint", "");
+      continue;
+    }
     const double want = h["value"].get<double>();
     if (std::abs(got - want) <= 1e-3 * std::max(1e-6, std::abs(want))) return h.value("hint", "");
   }
