@@ -10,6 +10,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
+#include <stb_image.h>
 
 #include <algorithm>
 #include <chrono>
@@ -162,10 +163,25 @@ void App::host(std::unique_ptr<Lab> lab) {
   lab_->board_.probe();
   // A window checks the exercises in the background (a headless run is what the checks start).
   checks_.reset();
+  loadPicture();
   if (imgui_) {
     checks_ = std::make_unique<LiveChecks>(std::string(variant::kLabExe) + "_tests");
     checks_->start();
   }
+}
+
+void App::loadPicture() {
+  picture_ = Texture(), pictureSize_ = glm::ivec2(0);
+  const fs::path file = lab_->board().picture();
+  std::error_code ec;
+  if (!imgui_ || file.empty() || !fs::is_regular_file(file, ec)) return;
+  int w = 0, h = 0, n = 0;
+  unsigned char* px = stbi_load(file.string().c_str(), &w, &h, &n, 4);
+  if (!px) return;  // (a missing or broken picture only leaves the panel without it)
+  picture_ = makeTexture2D(GL_RGBA8, w, h, GL_LINEAR);
+  glTextureSubImage2D(picture_.id(), 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  stbi_image_free(px);
+  pictureSize_ = {w, h};
 }
 
 void App::loop() {
@@ -285,7 +301,10 @@ void App::presentWindow() {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, target_.framebuffer());
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-  glBlitFramebuffer(0, 0, size.x, size.y, 0, 0, size.x, size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  {
+    auto timer = timers_.scope("blit");  // (a window's extra passes are timed too: ./workbook bench NN --window)
+    glBlitFramebuffer(0, 0, size.x, size.y, 0, 0, size.x, size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, size.x, size.y);
   Lab& lab = *lab_;
@@ -296,10 +315,15 @@ void App::presentWindow() {
     lab.lightIndex = std::min(lab.lightIndex, int(lab.scene.lights.size()) - 1);
     lab.ui();
   };
-  drawShell({lab.board_, checks_.get(), timers_, lab.programs_, lab.warnings_, lab.settings, size, labUi}, shell_);
+  drawShell({lab.board_, checks_.get(), timers_, lab.programs_, lab.warnings_, lab.settings, size, picture_.id(),
+             pictureSize_, labUi},
+            shell_);
   if (shell_.measureRequested) shell_.measureRequested = false, measureNow(true);
   ImGui::Render();
-  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  {
+    auto timer = timers_.scope("panels");
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  }
   // In a window, --screenshot captures the last frame as the user sees it, UI included.
   const bool lastFrame = options_.frames > 0 && frameIndex_ == options_.frames - 1 && !options_.screenshot.empty();
   if (screenshotRequested_ || lastFrame) {

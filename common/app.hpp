@@ -54,6 +54,8 @@ class App {
   void host(std::unique_ptr<Lab> lab);
   /// Renders frames until the window closes or options.frames have been drawn.
   void loop();
+  /// Loads the handout's picture of the finished lab (for the "Next" panel), in a window.
+  void loadPicture();
   /// Draws one frame of the hosted lab (`dt` seconds after the last one).
   void frame(float dt);
   /// Runs --sweep; returns the exit code.
@@ -83,7 +85,9 @@ class App {
   SplitScreen split_;
   Measurement measurement_;
   Texture heatmap_;
-  Label label_;                         // text burnt into the frame (a shader error at start-up)
+  Label label_;      // text burnt into the frame (a shader error at start-up)
+  Texture picture_;  // the handout's picture of the finished lab (a window only)
+  glm::ivec2 pictureSize_{0};
   std::unique_ptr<LiveChecks> checks_;  // the exercises' fast checks, in a window
   std::unique_ptr<Lab> lab_;            // declared last: destroyed first
 

@@ -31,12 +31,21 @@ ExerciseBoard::ExerciseBoard(const fs::path& manifest) {
     auto j = nlohmann::json::parse(readFile(manifest));
     number_ = j.at("lab").get<std::string>().substr(0, 2);
     title_ = j.at("title").get<std::string>();
+    lab_ = j.at("lab").get<std::string>();
+    if (j.contains("picture")) pictureName_ = j.at("picture").get<std::string>();
+    if (!pictureName_.empty()) picture_ = manifest.parent_path() / pictureName_;
     for (const auto& e : j.at("exercises"))
       exercises_.push_back({e.at("id").get<std::string>(), e.at("title").get<std::string>(), {}, {}});
   } catch (const std::exception& e) {
     std::fprintf(stderr, "warning: cannot read %s (%s); the exercise list will be empty\n", manifest.string().c_str(),
                  e.what());
   }
+}
+
+const ExerciseStatus* ExerciseBoard::next() const {
+  for (const auto& e : exercises_)
+    if (e.state == ExerciseState::NotImplemented || e.state == ExerciseState::Failed) return &e;
+  return nullptr;
 }
 
 void ExerciseBoard::set(const std::string& id, ExerciseState state, const std::string& message) {
@@ -87,6 +96,11 @@ void ExerciseBoard::printUnfinished() const {
       why = why.substr(said.size()) + " is still the stub";
     std::fprintf(stderr, "Exercise %s (%s) is %s: %s\n", e.id.c_str(), e.title.c_str(),
                  e.state == ExerciseState::Failed ? "failing" : "not implemented yet", why.c_str());
+  }
+  if (const ExerciseStatus* n = next()) {
+    std::string where = "Next: exercise " + n->id + ", in the handout labs/" + lab_ + "/README.md";
+    if (!pictureName_.empty()) where += "; the finished lab looks like labs/" + lab_ + "/" + pictureName_;
+    std::fprintf(stderr, "%s\n", where.c_str());
   }
 }
 

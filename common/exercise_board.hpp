@@ -34,8 +34,14 @@ class ExerciseBoard {
   explicit ExerciseBoard(const std::filesystem::path& manifest);
   /// The lab's two-digit number ("01").
   const std::string& number() const { return number_; }
+  /// The lab's folder name ("01_depth_map").
+  const std::string& lab() const { return lab_; }
   /// The lab's title.
   const std::string& title() const { return title_; }
+  /// The handout's picture of the finished lab ("picture" in exercises.json), or empty.
+  const std::filesystem::path& picture() const { return picture_; }
+  /// The first exercise that is not implemented or fails, or nullptr.
+  const ExerciseStatus* next() const;
   /// Every exercise in manifest order.
   const std::vector<ExerciseStatus>& exercises() const { return exercises_; }
   /// Records an exercise's state; unknown ids are ignored.
@@ -59,6 +65,8 @@ class ExerciseBoard {
     std::string id, file, expression;
   };
   std::string number_, title_;
+  std::string lab_, pictureName_;  // "01_depth_map", "images/directional.png"
+  std::filesystem::path picture_;
   std::vector<ExerciseStatus> exercises_;
   std::vector<Probe> probes_;
   std::map<std::filesystem::path, std::filesystem::file_time_type> probedFiles_;

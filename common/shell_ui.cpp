@@ -124,6 +124,25 @@ void compareSection(const Settings& settings, CompareChoice& c) {
 
 }  // namespace
 
+// While exercises are left: the next one, and the handout's picture of the finished lab beside the
+// student's own render (the student edition's demo shows something to aim at).
+void nextPanel(const ShellInput& in) {
+  const ExerciseStatus* next = in.board.next();
+  if (!next) return;
+  const float w = 220, h = in.pictureSize.x > 0 ? w * float(in.pictureSize.y) / float(in.pictureSize.x) : 0;
+  ImGui::SetNextWindowPos(ImVec2(float(in.frameSize.x) - 8, float(in.frameSize.y) - 8), ImGuiCond_FirstUseEver,
+                          ImVec2(1, 1));
+  ImGui::Begin("Next", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::TextColored(kYellow, "next: %s %s", next->id.c_str(), next->title.c_str());
+  ImGui::TextColored(kGrey, "(the handout: labs/%s/README.md)", in.board.lab().c_str());
+  if (in.picture) {
+    ImGui::TextColored(kGrey, "the finished lab:");
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(in.picture)), ImVec2(w, h), ImVec2(0, 0),
+                 ImVec2(1, 1));
+  }
+  ImGui::End();
+}
+
 void drawShell(const ShellInput& in, ShellState& state) {
   if (state.hidePanels) {
     ImGui::SetNextWindowPos(ImVec2(8, 8));
@@ -133,6 +152,7 @@ void drawShell(const ShellInput& in, ShellState& state) {
     return;
   }
   infoPanel(in, state);
+  nextPanel(in);
   ImGui::SetNextWindowPos(ImVec2(float(in.frameSize.x) - 8, 8), ImGuiCond_FirstUseEver, ImVec2(1, 0));
   ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);  // one line until opened: the scene comes first

@@ -39,6 +39,8 @@ struct ShellInput {
   const std::vector<std::string>& warnings;  ///< the lab's warnings
   Settings& settings;                        ///< the lab's settings (edited here)
   glm::ivec2 frameSize;                      ///< where the windows go
+  GLuint picture = 0;                        ///< the handout's picture of the finished lab (0: none)
+  glm::ivec2 pictureSize{0};                 ///< its size in pixels
   std::function<void()> labUi;               ///< the lab's own widgets
 };
 
