@@ -514,16 +514,27 @@ def sandbox_owned(path):
         return False
 
 
+def writable_by_others(path):
+    try:
+        return bool(os.lstat(path).st_mode & stat.S_IWOTH) and not os.path.islink(path)
+    except OSError:
+        return False
+
+
 def sweep_shared_tmp():
     """Removes what sandbox users left in the world-writable folders, so nothing one submission's code
-    leaves there meets the next one's (a Mesa .drirc, a note for a later student)."""
+    leaves there meets the next one's (a Mesa .drirc, a note for a later student). Only folders a
+    sandbox user can write into are searched (not, say, a build tree in /tmp)."""
     for top in SHARED_TMP:
         for folder, dirs, files in os.walk(top):
             for name in files + dirs:
                 p = Path(folder) / name
                 if sandbox_owned(p):
-                    shutil.rmtree(p, ignore_errors=True) if p.is_dir() and not p.is_symlink() else p.unlink(missing_ok=True)
-            dirs[:] = [d for d in dirs if (Path(folder) / d).exists()]
+                    try:
+                        shutil.rmtree(p) if p.is_dir() and not p.is_symlink() else p.unlink(missing_ok=True)
+                    except OSError:
+                        pass
+            dirs[:] = [d for d in dirs if writable_by_others(Path(folder) / d)]
 
 
 def runner_stopped(code, out, timed_out, timeout):

@@ -95,8 +95,28 @@ intruded = [str(p) for base in (grades, subs, root) for p in base.rglob("WB_INTR
 check(not intruded, f"a runner wrote into folders not its own: {intruded[:5]}")
 # Nor is anything of theirs left in the shared temporary folders (a .drirc for the judge, a note for
 # the next student): the grader sweeps them after each submission.
-left = [str(p) for top in ("/tmp", "/var/tmp", "/dev/shm") for p in Path(top).rglob("*")
-        if p.exists() and 61000 <= p.lstat().st_uid < 61600] if os.geteuid() == 0 else []
+def sandbox_files(top):
+    """Files of uids 61000-61599 in `top` and in the world-writable folders under it."""
+    found = []
+    for folder, dirs, files in os.walk(top):
+        for name in files + dirs:
+            try:
+                if 61000 <= os.lstat(os.path.join(folder, name)).st_uid < 61600:
+                    found.append(os.path.join(folder, name))
+            except OSError:
+                pass
+        dirs[:] = [d for d in dirs if world_writable(os.path.join(folder, d))]
+    return found
+
+
+def world_writable(path):
+    try:
+        return not os.path.islink(path) and bool(os.lstat(path).st_mode & 0o002)
+    except OSError:
+        return False
+
+
+left = [p for top in ("/tmp", "/var/tmp", "/dev/shm") for p in sandbox_files(top)] if os.geteuid() == 0 else []
 check(not left, f"files of the sandbox users outlived grading in a shared folder: {left[:5]}")
 
 # Every process a grading run started has ended (the sandbox's users are 61000 and up).
