@@ -280,11 +280,7 @@ void App::drawLab() {
       [&](int side) { sides_[side] = lab.light_; });
   if (!programsOk) {  // a window whose shaders never compiled says so on the frame, not just sky
     const auto bad = std::find_if(lab.programs_.begin(), lab.programs_.end(), [](const Program& p) { return !p.ok(); });
-    std::string where = bad->error().substr(0, bad->error().find('\n'));
-    if (const auto at = bad->error().find(": error"); at != std::string::npos) {
-      const size_t begin = bad->error().rfind('\n', at) == std::string::npos ? 0 : bad->error().rfind('\n', at) + 1;
-      where = bad->error().substr(begin, bad->error().find('\n', at) - begin);
-    }
+    std::string where = firstErrorLine(bad->error());
     if (const std::string root = std::string(variant::kSourceDir) + "/"; where.rfind(root, 0) == 0)
       where = where.substr(root.size());
     target_.bind();

@@ -28,15 +28,24 @@ float Label::scaleToFit(const std::string& text, int pixels, float most) {
   return w > 0 ? std::min(most, float(pixels) / w) : most;
 }
 
-void Label::draw(const std::string& text, glm::ivec2 pixel, glm::ivec2 size, float scale) {
-  if (!program_.ok()) program_ = Program({{GL_VERTEX_SHADER, "wb/label.vert"}, {GL_FRAGMENT_SHADER, "wb/label.frag"}});
-  if (!vao_.id()) vao_ = makeEmptyVertexArray();
+const Label::Mesh& Label::mesh(const std::string& text) {
+  if (const auto found = meshes_.find(text); found != meshes_.end()) return found->second;
+  if (meshes_.size() >= 16) meshes_.clear();          // (labels change rarely; keep a few)
   std::vector<char> raw(text.size() * 270 * 4 + 64);  // stb_easy_font's worst case per character
   std::string copy = text;
   const int quads = stb_easy_font_print(0, 0, copy.data(), nullptr, raw.data(), int(raw.size()));
   const float w = float(stb_easy_font_width(copy.data())), h = float(stb_easy_font_height(copy.data()));
-  std::vector<glm::vec2> box = {{-3, -3}, {w + 2, -3}, {w + 2, h}, {-3, -3}, {w + 2, h}, {-3, h}}, glyphs;
-  addQuads(raw, quads, glyphs);
+  // The dark box's two triangles, then the glyphs'.
+  std::vector<glm::vec2> vertices = {{-3, -3}, {w + 2, -3}, {w + 2, h}, {-3, -3}, {w + 2, h}, {-3, h}};
+  addQuads(raw, quads, vertices);
+  Mesh m{makeBuffer(vertices.size() * sizeof(glm::vec2), vertices.data()), GLsizei(vertices.size()) - 6};
+  return meshes_.emplace(text, std::move(m)).first->second;
+}
+
+void Label::draw(const std::string& text, glm::ivec2 pixel, glm::ivec2 size, float scale) {
+  if (!program_.ok()) program_ = Program({{GL_VERTEX_SHADER, "wb/label.vert"}, {GL_FRAGMENT_SHADER, "wb/label.frag"}});
+  if (!vao_.id()) vao_ = makeEmptyVertexArray();
+  const Mesh& m = mesh(text);
   // Colour only: the visibility and position outputs stay as drawn (the draw buffers come back after).
   GLint fbo = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
@@ -50,13 +59,11 @@ void Label::draw(const std::string& text, glm::ivec2 pixel, glm::ivec2 size, flo
   program_.set("u_size", glm::vec2(size));
   program_.set("u_scale", scale);
   glBindVertexArray(vao_.id());
-  for (const auto* part : {&box, &glyphs}) {
-    if (part->empty()) continue;
-    Buffer buffer = makeBuffer(part->size() * sizeof(glm::vec2), part->data());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, buffer.id());
-    program_.set("u_color", part == &box ? glm::vec4(0.1f, 0.1f, 0.1f, 1) : glm::vec4(1));
-    glDrawArrays(GL_TRIANGLES, 0, GLsizei(part->size()));
-  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, m.vertices.id());
+  program_.set("u_color", glm::vec4(0.1f, 0.1f, 0.1f, 1));
+  glDrawArrays(GL_TRIANGLES, 0, 6);
+  program_.set("u_color", glm::vec4(1));
+  if (m.glyphVertices > 0) glDrawArrays(GL_TRIANGLES, 6, m.glyphVertices);
   glEnable(GL_DEPTH_TEST);
   glDrawBuffers(fbo ? 4 : 1, before);
 }

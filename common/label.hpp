@@ -7,6 +7,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <map>
 #include <string>
 
 namespace wb {
@@ -21,8 +22,14 @@ class Label {
   static float scaleToFit(const std::string& text, int pixels, float most = 2.0f);
 
  private:
+  struct Mesh {
+    Buffer vertices;        // the box's 6, then the glyphs'
+    GLsizei glyphVertices;  // how many of the glyphs'
+  };
+  const Mesh& mesh(const std::string& text);  // built once per text, not per frame
   Program program_;
   VertexArray vao_;
+  std::map<std::string, Mesh> meshes_;
 };
 
 }  // namespace wb

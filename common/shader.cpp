@@ -102,6 +102,14 @@ ShaderSource preprocessShader(const std::string& text, const fs::path& origin, c
   return src;
 }
 
+std::string firstErrorLine(const std::string& message) {
+  if (const auto at = message.find(": error"); at != std::string::npos) {
+    const size_t begin = message.rfind('\n', at) == std::string::npos ? 0 : message.rfind('\n', at) + 1;
+    return message.substr(begin, message.find('\n', at) - begin);
+  }
+  return message.substr(0, message.find('\n'));
+}
+
 std::string mapShaderLog(const std::string& log, const std::vector<fs::path>& files) {
   // Mesa writes "2:14(3): error: ...", NVIDIA "2(14) : error ..."; both start with the source number.
   static const std::regex posRe(R"((\d+):(\d+)\((\d+)\)|(\d+)\((\d+)\))");

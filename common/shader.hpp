@@ -40,6 +40,9 @@ ShaderSource preprocessShader(const std::string& text, const std::filesystem::pa
                               const std::vector<std::filesystem::path>& path);
 
 /// Rewrites compiler positions such as "2:14(3): error" into "shaders/exercise.glsl:14: error".
+/// The line of a compiler's message that names file:line ("...exercise.glsl:13: error: ..."), or its
+/// first line.
+std::string firstErrorLine(const std::string& message);
 /// GLSL source numbers with a meaning of their own in an exercise file's text: the solution's chunks
 /// that isolation puts in (a message about them is named, not quoted), and "back to this file"
 /// (the preprocessor turns it into the file's own number).

@@ -12,16 +12,6 @@ namespace {
 
 const ImVec4 kRed(1, 0.4f, 0.4f, 1), kGreen(0.5f, 1, 0.5f, 1), kYellow(1, 0.85f, 0.3f, 1), kGrey(0.7f, 0.7f, 0.7f, 1);
 
-// The line of a compiler's message that names file:line ("...exercise.glsl:13: error: ..."), or its
-// first line.
-std::string firstErrorLine(const std::string& message) {
-  if (const auto at = message.find(": error"); at != std::string::npos) {
-    const size_t begin = message.rfind('\n', at) == std::string::npos ? 0 : message.rfind('\n', at) + 1;
-    return message.substr(begin, message.find('\n', at) - begin);
-  }
-  return message.substr(0, message.find('\n'));
-}
-
 void exerciseRow(const ExerciseStatus& e, const LiveChecks* checks,
                  const std::map<std::string, CheckVerdict>& verdicts) {
   const char* label = "not run yet";
@@ -39,7 +29,8 @@ void exerciseRow(const ExerciseStatus& e, const LiveChecks* checks,
   if (e.state == ExerciseState::Failed) label = "error (see below)", c = kRed;
   ImGui::TextColored(c, "%s  %-24s %s", e.id.c_str(), label, e.title.c_str());
   if (!e.message.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.message.c_str());
-  if (c.x == kRed.x && c.y == kRed.y && v != verdicts.end() && e.state == ExerciseState::Implemented) {
+  const bool checkedRed = label == std::string("wrong") || label == std::string("error");  // (by the checks)
+  if (checkedRed && e.state == ExerciseState::Implemented) {
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40);
     ImGui::TextColored(kRed, "      %s", v->second.headline.c_str());
     ImGui::PopTextWrapPos();
@@ -122,8 +113,6 @@ void compareSection(const Settings& settings, CompareChoice& c) {
     }
 }
 
-}  // namespace
-
 // While exercises are left: the next one, and the handout's picture of the finished lab beside the
 // student's own render (the student edition's demo shows something to aim at).
 void nextPanel(const ShellInput& in) {
@@ -142,6 +131,8 @@ void nextPanel(const ShellInput& in) {
   }
   ImGui::End();
 }
+
+}  // namespace
 
 void drawShell(const ShellInput& in, ShellState& state) {
   if (state.hidePanels) {

@@ -331,12 +331,6 @@ class Workspace:
         target.parent.mkdir(parents=True, exist_ok=True)
         target.write_bytes(content)
 
-    def show_sources(self, readable):
-        """The C++ exercise files are readable while the builder compiles them, and root's alone while
-        the runner runs: a file graded in isolation holds the solution's code of other exercises."""
-        for f in self.src.glob("labs/*/exercise.cpp"):
-            os.chmod(f, 0o644 if readable else 0o600)
-
     def after_killed_build(self, labs):
         """A build killed mid-way may leave a half-written object or executable that is newer than its
         sources, which make would take as up to date: the executables go and the exercise files are
@@ -370,9 +364,9 @@ class Workspace:
         targets = [t for lab in self.labs for t in (f"lab{lab['nn']}_solution", f"lab{lab['nn']}_solution_tests")]
         run_checked(["cmake", "--build", str(self.judge), "-j", str(jobs), "--target"] + targets,
                     "build the judge's build")
-        cache = self.build / "CMakeCache.txt"
-        if cache.exists() and (f"CMAKE_HOME_DIRECTORY:INTERNAL={self.src}\n" not in cache.read_text()
-                               or "WB_REGISTER_TESTS:BOOL=OFF" not in cache.read_text()):
+        cache = (self.build / "CMakeCache.txt").read_text() if (self.build / "CMakeCache.txt").exists() else None
+        if cache is not None and (f"CMAKE_HOME_DIRECTORY:INTERNAL={self.src}\n" not in cache
+                                  or "WB_REGISTER_TESTS:BOOL=OFF" not in cache):
             shutil.rmtree(self.build)  # a build of another source tree (an older grader's)
         own(self.build, self.builder, 0o755)
         env = dict(os.environ, HOME="/tmp")
@@ -380,10 +374,8 @@ class Workspace:
             sandbox.checked(["cmake", "-S", str(self.src), "-B", str(self.build), "-DCMAKE_BUILD_TYPE=RelWithDebInfo",
                              "-DWB_REGISTER_TESTS=OFF"],  # (discovery would run the student's code in the build)
                             self.builder, env, "configure the runner's build (as the builder user)")
-        self.show_sources(True)
         sandbox.checked(["cmake", "--build", str(self.build), "-j", str(jobs), "--target"] + self.runner_targets(self.labs),
                         self.builder, env, "build the runner's build (as the builder user)")
-        self.show_sources(False)
         self.fresh_outputs()
         return time.time() - t0
 
@@ -570,14 +562,10 @@ class Grader:
         the build time limit (compile-time work that takes too long: template or constexpr recursion,
         a huge file) is killed with its compilers and fails with a message that starts with
         BUILD_TIMED_OUT."""
-        self.ws.show_sources(True)
-        try:  # the builder user compiles, in the sandbox: no network, no view of the solutions
-            code, out, timed_out = self.sandbox.run(
-                ["cmake", "--build", str(self.ws.build), "-j", str(self.build_jobs), "--target"]
-                + self.ws.runner_targets(labs), self.build_timeout, env=dict(os.environ, HOME="/tmp"),
-                uid=self.ws.builder)
-        finally:
-            self.ws.show_sources(False)
+        # The builder user compiles, in the sandbox: no network, no view of the solutions.
+        code, out, timed_out = self.sandbox.run(
+            ["cmake", "--build", str(self.ws.build), "-j", str(self.build_jobs), "--target"]
+            + self.ws.runner_targets(labs), self.build_timeout, env=dict(os.environ, HOME="/tmp"), uid=self.ws.builder)
         if timed_out:
             self.build_timeouts += 1
             self.ws.after_killed_build(labs)

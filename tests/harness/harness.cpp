@@ -183,6 +183,20 @@ static std::string recordEnv() {
   return std::string("WB_STRICT_GL=1 ") + (stubs && *stubs ? "WB_SHADER_OVERLAY=" + quote(stubs) + " " : "");
 }
 
+// A runner's lab run under tape key `key`: this build's app records what its C++ exercises return
+// (--record-exercises), and the run ({"code", "log", "command"}) and that file go on the tape. A
+// judge gets both back. Returns the run; the file is `out`/exercises.json.
+static nlohmann::json recordRun(const std::string& key, const fs::path& out, const std::vector<std::string>& args) {
+  const fs::path calls = out / "exercises.json";
+  fs::create_directories(out);
+  fs::remove(calls);
+  const auto run = observeJson(key, [&] {
+    return runAppJson(out, recordEnv(), variant::kLabExe, joined(args, {"--record-exercises", calls.string()}));
+  });
+  observeFile(key + ".exercises", calls);
+  return run;
+}
+
 // Keeps only exercise `id`'s calls in a recorded --record-exercises file: the judge's app replays
 // the graded exercise and runs its own code for the others.
 static bool keepOnlyCalls(const fs::path& file, const std::string& id) {
@@ -214,12 +228,8 @@ static nlohmann::json drawExercise(const std::string& id, const fs::path& out, c
   }
   if (glsl && tapeMode() == TapeMode::Record) throw Error("recorded for the judge");
   if (glsl) return runAppJson(out, "WB_STRICT_GL=1 " + isolatedGlsl(id, out), trustedExe(), args);
+  const auto mine = recordRun(key, out, runnerArgs(args));
   const fs::path calls = out / "exercises.json";
-  fs::remove(calls);
-  const auto mine = observeJson(key, [&] {
-    return runAppJson(out, recordEnv(), variant::kLabExe, joined(runnerArgs(args), {"--record-exercises", calls}));
-  });
-  observeFile(key + ".exercises", calls);
   if (tapeMode() == TapeMode::Record) throw Error("recorded for the judge");
   if (mine.value("code", 128) != 0) return mine;  // the student's app failed: that is the result
   if (!fs::exists(calls) || !keepOnlyCalls(calls, id))
@@ -285,15 +295,9 @@ int recordRequestedRuns(const fs::path& requests) {
   for (std::string line; std::getline(in, line); ++k) {
     const auto request = nlohmann::json::parse(line, nullptr, false);
     if (request.is_discarded() || !request.contains("key") || !request.contains("args")) continue;
-    const std::string key = request["key"].get<std::string>();
     // In the tape's folder: the runner's own, while other exercises' runners may be running too.
-    const fs::path out = tapeDir() / ("request-" + std::to_string(k)), calls = out / "exercises.json";
-    fs::create_directories(out);
-    const auto args = request["args"].get<std::vector<std::string>>();
-    observeJson(key, [&] {
-      return runAppJson(out, recordEnv(), variant::kLabExe, joined(args, {"--record-exercises", calls.string()}));
-    });
-    observeFile(key + ".exercises", calls);
+    recordRun(request["key"].get<std::string>(), tapeDir() / ("request-" + std::to_string(k)),
+              request["args"].get<std::vector<std::string>>());
   }
   return 0;
 }
