@@ -280,9 +280,7 @@ void App::drawLab() {
       [&](int side) { sides_[side] = lab.light_; });
   if (!programsOk) {  // a window whose shaders never compiled says so on the frame, not just sky
     const auto bad = std::find_if(lab.programs_.begin(), lab.programs_.end(), [](const Program& p) { return !p.ok(); });
-    std::string where = firstErrorLine(bad->error());
-    if (const std::string root = std::string(variant::kSourceDir) + "/"; where.rfind(root, 0) == 0)
-      where = where.substr(root.size());
+    const std::string where = firstErrorLine(bad->error());
     target_.bind();
     const glm::ivec2 size = target_.size();
     const std::string said = "The shaders do not compile: nothing is drawn until they do (save a fix).";

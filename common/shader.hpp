@@ -39,15 +39,15 @@ struct ShaderSource {
 ShaderSource preprocessShader(const std::string& text, const std::filesystem::path& origin, const std::string& defines,
                               const std::vector<std::filesystem::path>& path);
 
-/// Rewrites compiler positions such as "2:14(3): error" into "shaders/exercise.glsl:14: error".
-/// The line of a compiler's message that names file:line ("...exercise.glsl:13: error: ..."), or its
-/// first line.
+/// The line of a compiler's message that names file:line ("labs/03_pcf/shaders/exercise.glsl:13: error:
+/// ...", relative to the checkout), or its first line.
 std::string firstErrorLine(const std::string& message);
 /// GLSL source numbers with a meaning of their own in an exercise file's text: the solution's chunks
 /// that isolation puts in (a message about them is named, not quoted), and "back to this file"
 /// (the preprocessor turns it into the file's own number).
 constexpr int kReferenceSource = 9999;
-constexpr int kThisFileSource = 9998;  ///< @copydoc kReferenceSource
+constexpr int kThisFileSource = 9998;  ///< "back to this file", as above
+/// Rewrites compiler positions such as "2:14(3): error" into "shaders/exercise.glsl:14: error".
 std::string mapShaderLog(const std::string& log, const std::vector<std::filesystem::path>& files);
 
 /// Compiles and links preprocessed stages; throws wb::Error with every message mapped to file:line.

@@ -11,6 +11,18 @@ namespace wb {
 namespace {
 
 const ImVec4 kRed(1, 0.4f, 0.4f, 1), kGreen(0.5f, 1, 0.5f, 1), kYellow(1, 0.85f, 0.3f, 1), kGrey(0.7f, 0.7f, 0.7f, 1);
+const float kWrapEm = 25;  // the info panel's text width, in font heights: about 330 px at 960x540
+
+// "llvmpipe (LLVM 15.0.6, 256 bits)" -> "llvmpipe": the panel stays narrow; the full name is a tooltip.
+std::string shortName(const std::string& renderer) { return renderer.substr(0, renderer.find(" (")); }
+
+std::string clipped(const std::string& s, size_t n) { return s.size() <= n ? s : s.substr(0, n - 3) + "..."; }
+
+void wrappedRed(const std::string& text) {
+  ImGui::PushTextWrapPos(ImGui::GetFontSize() * kWrapEm);
+  ImGui::TextColored(kRed, "  %s", text.c_str());
+  ImGui::PopTextWrapPos();
+}
 
 void exerciseRow(const ExerciseStatus& e, const LiveChecks* checks,
                  const std::map<std::string, CheckVerdict>& verdicts) {
@@ -27,44 +39,53 @@ void exerciseRow(const ExerciseStatus& e, const LiveChecks* checks,
   }
   if (e.state == ExerciseState::NotImplemented) label = "not implemented", c = kYellow;
   if (e.state == ExerciseState::Failed) label = "error (see below)", c = kRed;
-  ImGui::TextColored(c, "%s  %-24s %s", e.id.c_str(), label, e.title.c_str());
-  if (!e.message.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.message.c_str());
+  // One short row: the verdict and the start of the title; the whole title and message on hover.
+  ImGui::BeginGroup();
+  ImGui::TextColored(c, "%s %-17s", e.id.c_str(), label);
+  ImGui::SameLine();
+  ImGui::TextColored(kGrey, "%s", clipped(e.title, 22).c_str());
+  ImGui::EndGroup();
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("%s %s\n%s%s(./workbook check %s runs every test)", e.id.c_str(), e.title.c_str(),
+                      e.message.c_str(), e.message.empty() ? "" : "\n", e.id.substr(0, 2).c_str());
   const bool checkedRed = label == std::string("wrong") || label == std::string("error");  // (by the checks)
-  if (checkedRed && e.state == ExerciseState::Implemented) {
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40);
-    ImGui::TextColored(kRed, "      %s", v->second.headline.c_str());
-    ImGui::PopTextWrapPos();
-  }
+  if (checkedRed && e.state == ExerciseState::Implemented) wrappedRed(v->second.headline);
   if (e.state != ExerciseState::Failed) return;
   // A compile error is shown once, under the exercises; a row says nothing more about it.
   const std::string first = firstErrorLine(e.message);
   if (first.find(": error") != std::string::npos) return;
-  ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40);
-  ImGui::TextColored(kRed, "      %s", first.c_str());
-  ImGui::PopTextWrapPos();
+  wrappedRed(first);
 }
 
 void infoPanel(const ShellInput& in, ShellState& state) {
   const ExerciseBoard& board = in.board;
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::Begin(("Lab " + board.number() + ": " + board.title()).c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-  ImGui::TextColored(kGrey, "%s | %.1f fps | %dx%d", Context::renderer().c_str(), ImGui::GetIO().Framerate,
+  // "Lab 05: VSM" (the title up to its first colon) keeps the panel narrow; one id whatever the title.
+  const std::string title = "Lab " + board.number() + ": " + board.title().substr(0, board.title().find(':'));
+  ImGui::Begin((title + "###info").c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::TextColored(kGrey, "%.1f fps | %s | %dx%d", ImGui::GetIO().Framerate, shortName(Context::renderer()).c_str(),
                      in.frameSize.x, in.frameSize.y);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", Context::renderer().c_str());
   ImGui::Separator();
-  ImGui::Text("Exercises (./workbook check %s runs every test)", board.number().c_str());
-  if (in.checks && in.checks->running()) ImGui::TextColored(kGrey, "  checking ...");
+  if (in.checks && in.checks->running()) ImGui::TextColored(kGrey, "checking ...");
   const auto verdicts = in.checks ? in.checks->verdicts() : std::map<std::string, CheckVerdict>{};
   for (const auto& e : board.exercises()) exerciseRow(e, in.checks, verdicts);
-  if (!in.timers.passes().empty() && ImGui::CollapsingHeader("GPU time per pass")) {  // closed at first
-    for (const auto& [name, s] : in.timers.passes()) ImGui::Text("  %-12s %7.3f ms", name.c_str(), s.last);
-  }
   ImGui::Separator();
-  if (ImGui::Button("Measure against exact visibility")) state.measureRequested = true;
+  if (ImGui::Button("Measure")) state.measureRequested = true;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("compare this frame with exact (ray-cast) visibility");
+  if (!in.timers.passes().empty()) {
+    ImGui::SameLine();
+    ImGui::Checkbox("GPU ms", &state.showTimes);
+  }
   if (!state.measured.empty()) {
     ImGui::SameLine();
     ImGui::Checkbox("heatmap", &state.showHeatmap);
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * kWrapEm);
     ImGui::TextUnformatted(state.measured.c_str());
+    ImGui::PopTextWrapPos();
   }
+  if (state.showTimes)
+    for (const auto& [name, s] : in.timers.passes()) ImGui::Text("  %-12s %7.3f ms", name.c_str(), s.last);
   // Each distinct shader error once (one broken exercise.glsl breaks every program that includes
   // it), with what is on screen meanwhile.
   std::vector<std::string> shown;
@@ -73,16 +94,17 @@ void infoPanel(const ShellInput& in, ShellState& state) {
     if (p.error().empty() || std::find(shown.begin(), shown.end(), where) != shown.end()) continue;
     shown.push_back(where);
     ImGui::Separator();
-    ImGui::TextColored(kRed, p.ok() ? "Shader error (the last good version is still drawn):"
-                                    : "Shader error (nothing compiled yet: this pass draws nothing):");
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40);
-    ImGui::TextColored(kRed, "  %s", where.c_str());
-    ImGui::PopTextWrapPos();
+    ImGui::TextColored(kRed, p.ok() ? "Shader error (last good version drawn):" : "Shader error (nothing drawn yet):");
+    wrappedRed(where);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", p.error().c_str());
   }
+  ImGui::PushTextWrapPos(ImGui::GetFontSize() * kWrapEm);
   for (const auto& w : in.warnings) ImGui::TextColored(kYellow, "warning: %s", w.c_str());
+  ImGui::PopTextWrapPos();
   if (!state.lastScreenshot.empty()) ImGui::TextColored(kGrey, "saved %s", state.lastScreenshot.c_str());
-  ImGui::TextColored(kGrey, "drag: orbit | wheel: zoom | 1-9: bookmarks | H: hide panels | F12: screenshot");
+  ImGui::TextColored(kGrey, "H: hide panels | 1-9: views | F12: save");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("drag: orbit | wheel: zoom | 1-9: camera bookmarks | H: hide panels | F12: screenshot");
   ImGui::End();
 }
 
@@ -117,13 +139,16 @@ void compareSection(const Settings& settings, CompareChoice& c) {
 // student's own render (the student edition's demo shows something to aim at).
 void nextPanel(const ShellInput& in) {
   const ExerciseStatus* next = in.board.next();
-  if (!next) return;
-  const float w = 220, h = in.pictureSize.x > 0 ? w * float(in.pictureSize.y) / float(in.pictureSize.x) : 0;
+  const bool broken = std::any_of(in.programs.begin(), in.programs.end(), [](const Program& p) { return !p.ok(); });
+  if (!next || broken) return;  // (a frame that draws nothing says so where this panel would be)
+  const float w = 180, h = in.pictureSize.x > 0 ? w * float(in.pictureSize.y) / float(in.pictureSize.x) : 0;
   ImGui::SetNextWindowPos(ImVec2(float(in.frameSize.x) - 8, float(in.frameSize.y) - 8), ImGuiCond_FirstUseEver,
                           ImVec2(1, 1));
   ImGui::Begin("Next", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-  ImGui::TextColored(kYellow, "next: %s %s", next->id.c_str(), next->title.c_str());
-  ImGui::TextColored(kGrey, "(the handout: labs/%s/README.md)", in.board.lab().c_str());
+  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + w);
+  ImGui::TextColored(kYellow, "%s %s", next->id.c_str(), next->title.c_str());
+  ImGui::TextColored(kGrey, "handout: labs/%s/README.md", in.board.lab().c_str());
+  ImGui::PopTextWrapPos();
   if (in.picture) {
     ImGui::TextColored(kGrey, "the finished lab:");
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(in.picture)), ImVec2(w, h), ImVec2(0, 0),

@@ -24,6 +24,7 @@ class Settings;
 struct ShellState {
   bool hidePanels = false;        ///< H: the scene alone, for a lecture
   bool showHeatmap = false;       ///< the measurement's heatmap over the frame
+  bool showTimes = false;         ///< GPU time per pass in the info panel
   bool measureRequested = false;  ///< set when the Measure button was pressed
   std::string measured;           ///< the last measurement, as text
   std::string lastScreenshot;     ///< the last screenshot's path

@@ -87,7 +87,7 @@ class CheckListener : public ::testing::EmptyTestEventListener {
                   wb::test::tapeDir().string().c_str());
     else
       std::printf("\nLab %s: %s build\n", wb::variant::kLab, wb::variant::kName);
-    std::printf("  %-5s %-46s %-16s %s\n", "ID", "exercise", "status", "diagnosis");
+    std::printf("  %-5s %-16s %s\n", "ID", "status", "exercise (then what was found)");
     int done = 0;
     nlohmann::json verdicts = nlohmann::json::object();  // WB_CHECK_JSON: for the app's live checks
     for (const auto& e : manifest) {
@@ -98,9 +98,11 @@ class CheckListener : public ::testing::EmptyTestEventListener {
                                                                   : "wrong";
       done += d.verdict.empty();
       if (expectStubs_ && status != "not implemented") exitCode = 1;
-      std::printf("  %-5s %-46.46s %-16s %s\n", e.id.c_str(), e.title.c_str(), status.c_str(), d.headline.c_str());
+      // The whole title on the verdict's line; what was found below it, where it has room.
+      std::printf("  %-5s %-16s %s\n", e.id.c_str(), status.c_str(), e.title.c_str());
       if (ran_.count(e.id)) verdicts[e.id] = {{"status", status}, {"headline", d.headline}};
-      for (const auto& line : d.details) std::printf("  %-5s   %s\n", "", line.c_str());
+      if (!d.headline.empty()) std::printf("        %s\n", d.headline.c_str());
+      for (const auto& line : d.details) std::printf("          %s\n", line.c_str());
     }
     if (const char* file = std::getenv("WB_CHECK_JSON"); file && *file) std::ofstream(file) << verdicts.dump();
     if (!expectStubs_ && done != int(manifest.size())) exitCode = 1;
