@@ -347,7 +347,8 @@ MeasureResult App::measureNow(bool report) {
   CompareChoice split = shell_.compare;
   split.on = split.on && !split.key.empty();
   const MeasureResult r =
-      measurement_.measure({target_, lab.scene, lab.alphaCutoff_, lab.light_, sceneLight, split, sides_});
+      measurement_.measure(
+      {target_, lab.scene, lab.alphaCutoff_, lab.light_, sceneLight, split, sides_, 16 << (2 * lab.lightSamples_)});
   shell_.measured = r.text;
   lastMeasure_ = r;
   if (!report) return r;

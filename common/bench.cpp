@@ -28,20 +28,23 @@ std::vector<std::string> header(const Options& o, const std::vector<std::string>
   std::vector<std::string> h;
   for (const auto& sw : o.sweeps) h.push_back(sw.first);
   if (o.metrics)
-    h.insert(h.end(), {"acne_%", "leak_%", "contact_gap_texels", "shadow_light_%", "pcf_diff_%", "pcf_lighter_%"});
+    h.insert(h.end(), {"acne_%", "leak_%", "contact_gap_texels", "shadow_light_%", "pcf_diff_%", "pcf_lighter_%",
+                       "area_diff_%", "area_off_%"});
   for (const auto& p : passes) h.push_back(p + "_gpu_ms");
   h.emplace_back("frame_ms");
   return h;
 }
 
 std::vector<std::string> measuredCells(const MeasureResult& m) {
-  const bool ref = m.reference.pixels > 0;
+  const bool ref = m.reference.pixels > 0, area = m.area.pixels > 0;
   return {strf("%.2f", 100 * m.metrics.acneRate()),
           strf("%.2f", 100 * m.metrics.leakRate()),
           m.gapTexels < 0 ? "n/a" : strf("%.1f", m.gapTexels),
           strf("%.2f", 100 * m.metrics.meanShadowLight()),
           ref ? strf("%.2f", 100 * m.reference.meanAbs()) : "n/a",
-          ref ? strf("%.2f", 100 * m.reference.lighterRate()) : "n/a"};
+          ref ? strf("%.2f", 100 * m.reference.lighterRate()) : "n/a",
+          area ? strf("%.2f", 100 * m.area.meanAbs()) : "n/a",
+          area ? strf("%.2f", 100 * (m.area.lighterRate() + m.area.darkerRate())) : "n/a"};
 }
 
 }  // namespace

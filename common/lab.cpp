@@ -38,6 +38,13 @@ void Lab::useDepthBias(float initial) {
   biasRegistered_ = true;
 }
 
+void Lab::useLightSize(float initial) {
+  lightSize_ = initial;
+  settings.add("light.size", lightSize_, 0.0f, 2.0f, "the spot light's disk diameter in world units (0: a point)");
+  settings.addChoice("truth.light_samples", lightSamples_, {"16", "64", "256"},
+                     "rays per pixel from the surface to the light's disk in the measured reference");
+}
+
 Program& Lab::loadProgram(std::vector<ShaderStage> stages, std::string defines) {
   programs_.push_back(Program::tryLoad(std::move(stages), std::move(defines)));
   return programs_.back();

@@ -136,6 +136,11 @@ class Lab {
   /// Registers debug.light_face (which face or cascade the view from the light shows), for labs
   /// whose light has several matrices.
   void useLightFaces() { debug_.addLightFace(settings); }
+  /// Registers light.size (the spot light's disk diameter, world units, starting at `initial`) and
+  /// truth.light_samples (rays per pixel of the area-light reference), for labs with soft shadows.
+  void useLightSize(float initial);
+  /// The light's size (useLightSize() registers its setting; 0 without it).
+  float lightSize() const { return lightSize_; }
   /// The constant depth bias (useDepthBias() registers its setting).
   float depthBias() const { return bias_; }
   /// Texels of alpha-tested materials below this alpha are holes (setting alpha.cutoff); the exact
@@ -170,6 +175,8 @@ class Lab {
   int mapSizeChoice_ = 1;  // index into 512..8192
   float bias_ = 0.004f;
   bool biasRegistered_ = false;
+  float lightSize_ = 0;
+  int lightSamples_ = 1;  // index into 16, 64, 256
   float alphaCutoff_ = 0.5f;
   int bookmark_ = 1;  // counted from 1, as the keys are
   std::list<Program> programs_;

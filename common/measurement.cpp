@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 namespace wb {
@@ -41,6 +42,18 @@ nlohmann::json MeasureResult::toJson() const {
     j["pcf_diff_percent"] = 100 * reference.meanAbs();
     j["pcf_lighter_percent"] = 100 * reference.lighterRate();
   }
+  j["area_mean_abs_percent"] = nullptr, j["area_off_percent"] = nullptr;
+  if (area.pixels > 0) {
+    j["area_mean_abs_percent"] = 100 * area.meanAbs();
+    j["area_off_percent"] = 100 * (area.lighterRate() + area.darkerRate());
+  }
+  j["penumbra"] = nlohmann::json::array();
+  for (const auto& p : penumbra)
+    j["penumbra"].push_back({{"x", p.x},
+                             {"distance", p.distance},
+                             {"theory", p.theory},
+                             {"width", p.width},
+                             {"reference_width", p.referenceWidth}});
   return j;
 }
 
@@ -84,6 +97,39 @@ std::string Measurement::halves(const MeasureInput& in, const FloatImage& render
   return text;
 }
 
+// Soft shadows: the frame against the visible fraction of the light's disk, and the penumbra probe.
+std::string Measurement::areaText(const MeasureInput& in, const Light& light, const FloatImage& rendered,
+                                  const std::vector<glm::vec4>& positions, MeasureResult& r) {
+  if (light.size <= 0 || light.type != LightType::Spot) return "";
+  const auto t0 = std::chrono::steady_clock::now();
+  const FloatImage area =
+      areaLightVisibility(*rays_, light, rendered.width, rendered.height, positions, in.lightSamples);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  std::vector<float> ref(area.pixels);
+  // Compared where the light could reach and something is in shadow (either side below 1): the
+  // share of a frame that is fully lit says nothing about a soft shadow.
+  for (size_t i = 0; i < ref.size(); ++i)
+    if (std::isnan(ref[i]) || positions[i].w <= 0 || (ref[i] >= 0.999f && rendered.pixels[i] >= 0.999f)) ref[i] = -1;
+  std::string text;
+  for (int side = 0; side < (in.split.on ? 2 : 1); ++side) {
+    const int w = rendered.width, x0 = in.split.on ? side * (w - w / 2) : 0, x1 = in.split.on ? x0 + w / 2 : w;
+    const ReferenceDifference d = compareWithReference(rendered, ref, x0, x1);
+    if (!in.split.on || side == 1) r.area = d;
+    text += strf("\nagainst the area light (%d rays a pixel, %.0f ms)%s, where either is below 1: |difference| "
+                 "%.2f%%, off by > 0.1 on %.2f%%",
+                 in.lightSamples, ms,
+                 !in.split.on ? "" : strf(", %s %s=%s", side ? "right" : "left", in.split.key.c_str(),
+                                          (side ? in.split.b : in.split.a).c_str()).c_str(),
+                 100 * d.meanAbs(), 100 * (d.lighterRate() + d.darkerRate()));
+  }
+  r.penumbra = measurePenumbra(in.scene.penumbraProbe, rendered, area, positions, *rays_, light, in.scene.boundsMin.y);
+  if (!r.penumbra.empty()) text += "\npenumbra, 10-90% width (world units) against receiver-blocker distance:";
+  if (!r.penumbra.empty()) text += "\n      x  distance    theory  rendered  reference";
+  for (const auto& p : r.penumbra)
+    text += strf("\n  %5.2f  %8.3f  %8.3f  %8.3f  %9.3f", p.x, p.distance, p.theory, p.width, p.referenceWidth);
+  return text;
+}
+
 MeasureResult Measurement::measure(const MeasureInput& in) {
   const auto t0 = std::chrono::steady_clock::now();
   const int w = in.target.size().x, h = in.target.size().y;
@@ -116,6 +162,7 @@ MeasureResult Measurement::measure(const MeasureInput& in) {
         100 * r.reference.meanAbs(), 100 * r.reference.lighterRate(), 100 * r.reference.darkerRate());
   }
   const std::string split = in.split.on ? halves(in, rendered, exact, positions) : "";
+  const std::string area = areaText(in, light, rendered, positions, r);
   r.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   const VisibilityMetrics& m = r.metrics;
   r.text = strf(
@@ -124,7 +171,7 @@ MeasureResult Measurement::measure(const MeasureInput& in) {
                "is blocked)\n(exact visibility by ray casting, %.0f ms)",
                100 * m.acneRate(), m.acnePixels, m.litPixels, 100 * m.leakRate(), m.leakPixels, m.shadowedPixels,
                r.gapTexels < 0 ? "n/a" : strf("%.1f", r.gapTexels).c_str(), 100 * m.meanShadowLight(), r.milliseconds) +
-           "\n" + pcfText + split;
+           "\n" + pcfText + split + area;
   r.heatmap = artifactHeatmap(rendered, exact, positions);
   return r;
 }

@@ -9,6 +9,7 @@
 #include "common/ground_truth.hpp"
 #include "common/light_view.hpp"
 #include "common/prefilter.hpp"
+#include "common/soft_shadows.hpp"
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -23,12 +24,16 @@ struct MeasureResult {
   VisibilityMetrics metrics;      ///< acne, leak, light in shadows (whole frame)
   double gapTexels = -1;          ///< contact gap in texels, −1 when not defined for this light
   ReferenceDifference reference;  ///< against PCF (pixels = 0 when not defined)
+  ReferenceDifference area;       ///< against the area-light reference (pixels = 0 for a point light)
+  std::vector<PenumbraSlab> penumbra;  ///< the scene's penumbra probe, if it has one and the light a size
   std::string notes;              ///< why a measurement was skipped, if one was
   std::string text;               ///< the whole result for people
   std::vector<uint8_t> heatmap;   ///< RGBA8: acne red, leaks blue (rows bottom to top)
   double milliseconds = 0;        ///< time the measurement took
   /// The numbers as JSON: acne_percent, leak_percent, shadow_light_percent, contact_gap_texels
-  /// (null when not defined), pcf_diff_percent and pcf_lighter_percent (null when not defined).
+  /// (null when not defined), pcf_diff_percent and pcf_lighter_percent (null when not defined),
+  /// area_mean_abs_percent and area_off_percent (null for a point light; over the pixels where the
+  /// frame or the area-light reference is below 1), penumbra (rows).
   nlohmann::json toJson() const;
 };
 
@@ -41,6 +46,7 @@ struct MeasureInput {
   const Light& sceneLight;     ///< the light to use when the lab showed none
   const CompareChoice& split;  ///< split screen, if on
   const LightView* sides;      ///< in split screen: the left and right halves' lights (two)
+  int lightSamples;            ///< rays per pixel of the area-light reference
 };
 
 /// Measures frames; keeps the ray-cast scene and the PCF reference between calls.
@@ -53,6 +59,8 @@ class Measurement {
   const std::vector<float>* pcfReference(const MeasureInput& in, int side);
   std::string halves(const MeasureInput& in, const FloatImage& rendered, const FloatImage& exact,
                      const std::vector<glm::vec4>& positions);
+  std::string areaText(const MeasureInput& in, const Light& light, const FloatImage& rendered,
+                       const std::vector<glm::vec4>& positions, MeasureResult& r);
   std::unique_ptr<RayScene> rays_;
   const Scene* raysScene_ = nullptr;
   float raysCutoff_ = -1;

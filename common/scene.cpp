@@ -49,6 +49,12 @@ class Fields {
       fail(k, "must be [x, y, z] (three numbers), got " + v.dump());
     return {v[0].get<float>(), v[1].get<float>(), v[2].get<float>()};
   }
+  glm::vec2 range(const char* k) const {  // a required [lo, hi] with hi > lo
+    const json& v = has(k) ? j_[k] : json();
+    if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number() || v[1] <= v[0])
+      fail(k, "must be [lo, hi] (two numbers, hi > lo), got " + v.dump());
+    return {v[0].get<float>(), v[1].get<float>()};
+  }
   glm::vec3 direction(const char* k, glm::vec3 fallback) const {
     glm::vec3 d = vec3(k, fallback);
     if (glm::length(d) < 1e-6f) fail(k, "must not be the zero vector");
@@ -128,6 +134,9 @@ Light readLight(const json& entry, size_t i, const fs::path& file) {
   l.nearPlane = f.positive("near", l.nearPlane);
   l.farPlane = f.positive("far", l.farPlane);
   if (l.farPlane <= l.nearPlane) f.fail("far", "must be greater than near");
+  l.size = f.num("size", 0);
+  if (l.size < 0 || (l.size > 0 && l.type != LightType::Spot))
+    f.fail("size", "a light's size (its disk's diameter, world units) must be >= 0, and only spot lights have one");
   return l;
 }
 
@@ -141,6 +150,16 @@ CameraBookmark readCamera(const json& entry, size_t i, const fs::path& file) {
   b.pitch = f.num("pitch", b.pitch);
   b.fov = f.positive("fov", b.fov);
   return b;
+}
+
+PenumbraProbe readProbe(const json& root, const fs::path& file) {
+  PenumbraProbe p;
+  if (!root.contains("penumbra_probe")) return p;
+  Fields f(root["penumbra_probe"], "penumbra_probe", file);
+  p.on = true, p.x = f.range("x"), p.z = f.range("z");
+  p.bins = int(f.num("bins", float(p.bins)));
+  if (p.bins < 1 || p.bins > 100) f.fail("bins", "must be 1 to 100");
+  return p;
 }
 
 json parseSceneFile(const fs::path& file) {
@@ -175,6 +194,7 @@ Scene Scene::load(const fs::path& file) {
   const json& cameras = arrayField(root, "cameras", file, false);
   for (size_t i = 0; i < cameras.size(); ++i) scene.cameras.push_back(readCamera(cameras[i], i, file));
   if (scene.cameras.empty()) scene.cameras.emplace_back();
+  scene.penumbraProbe = readProbe(root, file);
 
   scene.boundsMin = glm::vec3(1e30f);
   scene.boundsMax = glm::vec3(-1e30f);

@@ -41,6 +41,16 @@ struct Light {
   float angle = 30;                         ///< spot: half-angle of the cone in degrees
   float nearPlane = 0.5f;                   ///< spot/point: near plane of the shadow projection
   float farPlane = 50;                      ///< spot/point: far plane of the shadow projection
+  float size = 0;  ///< spot: the diameter of the light's disk, facing `direction`, in world units (0: a point)
+};
+
+/// Where a scene asks for its penumbra to be measured (lab 07): a straight shadow edge on the
+/// ground that runs along world x, crossed along z. Ground pixels with x in `x` and z in `z` are cut
+/// into `bins` slabs along x, and each slab's visibility profile across z gives one width.
+struct PenumbraProbe {
+  bool on = false;     ///< the scene has one
+  glm::vec2 x{0}, z{0};  ///< world x and z ranges
+  int bins = 10;       ///< slabs along x
 };
 
 /// A loaded scene file.
@@ -49,6 +59,7 @@ struct Scene {
   std::vector<SceneObject> objects;     ///< everything drawn
   std::vector<Light> lights;            ///< at least one
   std::vector<CameraBookmark> cameras;  ///< at least one
+  PenumbraProbe penumbraProbe;          ///< "penumbra_probe", if the scene has one
   glm::vec3 boundsMin{0};               ///< world-space minimum corner of all objects
   glm::vec3 boundsMax{0};               ///< world-space maximum corner of all objects
 

@@ -1,0 +1,55 @@
+#version 450 core
+// PASS 2 of lab 07: soft shadows from the spot light's disk, by PCSS (or fixed-width PCF to compare).
+#include "exercise.glsl"
+#include "wb/lighting.glsl"
+#include "wb/outputs.glsl"
+in vec3 v_world;
+in vec3 v_normal;
+in vec2 v_uv;
+uniform vec3 u_color;
+uniform sampler2D u_albedo;
+uniform int u_hasTexture;
+uniform float u_alphaCutoff;
+uniform sampler2D u_shadowMap;
+uniform mat4 u_lightViewProj;
+uniform vec3 u_lightPos;
+uniform vec3 u_lightDir;  // the spot's axis, the direction the light travels
+uniform float u_spotCos;  // cosine of the cone's half-angle
+uniform float u_lightSizeUV, u_minFilterUV, u_pcfWidthUV, u_bias;
+uniform vec2 u_nearFar;
+uniform int u_searchSamples, u_filterSamples;
+
+// pcss.method=pcf: one fixed width everywhere, the same taps as PCSS's filter (the comparison).
+float fixedPcf(vec2 uv, float zReceiver, uvec2 pixel) {
+  mat2 rotation = pcssRotation(pixel);
+  float lit = 0.0;
+  for (int k = 0; k < u_filterSamples; ++k)
+    lit += step(zReceiver - u_bias, pcssDepthAt(u_shadowMap, uv + rotation * WB_POISSON_DISK[k] * (0.5 * u_pcfWidthUV),
+                                                u_nearFar));
+  return lit / float(u_filterSamples);
+}
+
+void main() {
+  vec4 texel = u_hasTexture != 0 ? texture(u_albedo, v_uv) : vec4(1.0);
+  if (texel.a < u_alphaCutoff) discard;
+  vec3 albedo = u_color * texel.rgb;
+  vec3 n = normalize(v_normal);
+  if (!gl_FrontFacing) n = -n;
+  vec3 toLight = normalize(u_lightPos - v_world);
+  vec4 clip = u_lightViewProj * vec4(v_world, 1.0);
+  vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+  float zReceiver = dot(v_world - u_lightPos, u_lightDir);  // along the light's axis
+  PcssSettings s = PcssSettings(u_lightSizeUV, u_nearFar, u_searchSamples, u_filterSamples, u_minFilterUV, u_bias);
+#if PCSS_METHOD == 1
+  float visibility = fixedPcf(uv, zReceiver, uvec2(gl_FragCoord.xy));
+#else
+  float visibility = pcss(u_shadowMap, uv, zReceiver, s, uvec2(gl_FragCoord.xy));
+#endif
+  if (wbIsTodo(visibility)) {  // a stub: show it, never fake a shadow
+    wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
+    return;
+  }
+  bool facesLight = dot(n, toLight) > 0.0;
+  float cone = smoothstep(u_spotCos, mix(u_spotCos, 1.0, 0.1), dot(-toLight, u_lightDir));
+  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(cone), visibility), visibility, v_world, facesLight);
+}
