@@ -40,6 +40,12 @@ void main() {
   vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
   float zReceiver = dot(v_world - u_lightPos, u_lightDir);  // along the light's axis
   PcssSettings s = PcssSettings(u_lightSizeUV, u_nearFar, u_searchSamples, u_filterSamples, u_minFilterUV, u_bias);
+  bool facesLight = dot(n, toLight) > 0.0;
+  float cone = smoothstep(u_spotCos, mix(u_spotCos, 1.0, 0.1), dot(-toLight, u_lightDir));
+  if (cone == 0.0 || !facesLight) {  // no light reaches it anyway: spend no taps (a CPU renderer needs them)
+    wbWriteOutputs(wbShade(albedo, n, toLight, vec3(0.0), 0.0), 0.0, v_world, facesLight);
+    return;
+  }
 #if PCSS_METHOD == 1
   float visibility = fixedPcf(uv, zReceiver, uvec2(gl_FragCoord.xy));
 #else
@@ -49,7 +55,5 @@ void main() {
     wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
     return;
   }
-  bool facesLight = dot(n, toLight) > 0.0;
-  float cone = smoothstep(u_spotCos, mix(u_spotCos, 1.0, 0.1), dot(-toLight, u_lightDir));
   wbWriteOutputs(wbShade(albedo, n, toLight, vec3(cone), visibility), visibility, v_world, facesLight);
 }
