@@ -39,8 +39,9 @@ void Lab::useDepthBias(float initial) {
 }
 
 void Lab::useLightSize(float initial) {
-  lightSize_ = initial;
-  settings.add("light.size", lightSize_, 0.0f, 2.0f, "the spot light's disk diameter in world units (0: a point)");
+  lightSize_ = initial, lightSizeUsed_ = true;
+  settings.add("light.size", lightSize_, 0.0f, 2.0f,
+               "the spot light's disk diameter in world units (0: a point); starts at the scene light's size");
   settings.addChoice("truth.light_samples", lightSamples_, {"16", "64", "256"},
                      "rays per pixel from the surface to the light's disk in the measured reference");
 }

@@ -136,8 +136,9 @@ class Lab {
   /// Registers debug.light_face (which face or cascade the view from the light shows), for labs
   /// whose light has several matrices.
   void useLightFaces() { debug_.addLightFace(settings); }
-  /// Registers light.size (the spot light's disk diameter, world units, starting at `initial`) and
-  /// truth.light_samples (rays per pixel of the area-light reference), for labs with soft shadows.
+  /// Registers light.size (the spot light's disk diameter, world units: the scene light's "size"
+  /// when it has one and the command line does not set it, else `initial`) and truth.light_samples
+  /// (rays per pixel of the area-light reference), for labs with soft shadows.
   void useLightSize(float initial);
   /// The light's size (useLightSize() registers its setting; 0 without it).
   float lightSize() const { return lightSize_; }
@@ -176,6 +177,7 @@ class Lab {
   float bias_ = 0.004f;
   bool biasRegistered_ = false;
   float lightSize_ = 0;
+  bool lightSizeUsed_ = false;  // useLightSize() was called: a scene's light size sets light.size
   int lightSamples_ = 1;  // index into 16, 64, 256
   float alphaCutoff_ = 0.5f;
   int bookmark_ = 1;  // counted from 1, as the keys are
