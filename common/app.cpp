@@ -352,8 +352,7 @@ MeasureResult App::measureNow(bool report) {
   const Light& sceneLight = lab.lightShown_ ? lab.light_.light : lab.scene.lights[size_t(lab.lightIndex)];
   CompareChoice split = shell_.compare;
   split.on = split.on && !split.key.empty();
-  const MeasureResult r =
-      measurement_.measure(
+  const MeasureResult r = measurement_.measure(
       {target_, lab.scene, lab.alphaCutoff_, lab.light_, sceneLight, split, sides_, 16 << (2 * lab.lightSamples_)});
   shell_.measured = r.text;
   lastMeasure_ = r;

@@ -178,7 +178,7 @@ class Lab {
   bool biasRegistered_ = false;
   float lightSize_ = 0;
   bool lightSizeUsed_ = false;  // useLightSize() was called: a scene's light size sets light.size
-  int lightSamples_ = 1;  // index into 16, 64, 256
+  int lightSamples_ = 1;        // index into 16, 64, 256
   float alphaCutoff_ = 0.5f;
   int bookmark_ = 1;  // counted from 1, as the keys are
   std::list<Program> programs_;

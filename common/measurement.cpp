@@ -115,12 +115,15 @@ std::string Measurement::areaText(const MeasureInput& in, const Light& light, co
     const int w = rendered.width, x0 = in.split.on ? side * (w - w / 2) : 0, x1 = in.split.on ? x0 + w / 2 : w;
     const ReferenceDifference d = compareWithReference(rendered, ref, x0, x1);
     if (!in.split.on || side == 1) r.area = d;
-    text += strf("\nagainst the area light (%d rays a pixel, %.0f ms)%s, where either is below 1: |difference| "
-                 "%.2f%%, off by > 0.1 on %.2f%%",
-                 in.lightSamples, ms,
-                 !in.split.on ? "" : strf(", %s %s=%s", side ? "right" : "left", in.split.key.c_str(),
-                                          (side ? in.split.b : in.split.a).c_str()).c_str(),
-                 100 * d.meanAbs(), 100 * (d.lighterRate() + d.darkerRate()));
+    text += strf(
+        "\nagainst the area light (%d rays a pixel, %.0f ms)%s, where either is below 1: |difference| "
+        "%.2f%%, off by > 0.1 on %.2f%%",
+        in.lightSamples, ms,
+        !in.split.on ? ""
+                     : strf(", %s %s=%s", side ? "right" : "left", in.split.key.c_str(),
+                            (side ? in.split.b : in.split.a).c_str())
+                           .c_str(),
+        100 * d.meanAbs(), 100 * (d.lighterRate() + d.darkerRate()));
   }
   r.penumbra = measurePenumbra(in.scene.penumbraProbe, rendered, area, positions, *rays_, light, in.scene.boundsMin.y);
   if (!r.penumbra.empty()) text += "\npenumbra, 10-90% width (world units) against receiver-blocker distance:";

@@ -21,15 +21,15 @@ namespace wb {
 
 /// What one measurement found.
 struct MeasureResult {
-  VisibilityMetrics metrics;      ///< acne, leak, light in shadows (whole frame)
-  double gapTexels = -1;          ///< contact gap in texels, −1 when not defined for this light
-  ReferenceDifference reference;  ///< against PCF (pixels = 0 when not defined)
-  ReferenceDifference area;       ///< against the area-light reference (pixels = 0 for a point light)
+  VisibilityMetrics metrics;           ///< acne, leak, light in shadows (whole frame)
+  double gapTexels = -1;               ///< contact gap in texels, −1 when not defined for this light
+  ReferenceDifference reference;       ///< against PCF (pixels = 0 when not defined)
+  ReferenceDifference area;            ///< against the area-light reference (pixels = 0 for a point light)
   std::vector<PenumbraSlab> penumbra;  ///< the scene's penumbra probe, if it has one and the light a size
-  std::string notes;              ///< why a measurement was skipped, if one was
-  std::string text;               ///< the whole result for people
-  std::vector<uint8_t> heatmap;   ///< RGBA8: acne red, leaks blue (rows bottom to top)
-  double milliseconds = 0;        ///< time the measurement took
+  std::string notes;                   ///< why a measurement was skipped, if one was
+  std::string text;                    ///< the whole result for people
+  std::vector<uint8_t> heatmap;        ///< RGBA8: acne red, leaks blue (rows bottom to top)
+  double milliseconds = 0;             ///< time the measurement took
   /// The numbers as JSON: acne_percent, leak_percent, shadow_light_percent, contact_gap_texels
   /// (null when not defined), pcf_diff_percent and pcf_lighter_percent (null when not defined),
   /// area_mean_abs_percent and area_off_percent (null for a point light; over the pixels where the

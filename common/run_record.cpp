@@ -46,8 +46,8 @@ RunResult readRunRecord(const fs::path& path) {
       r.gapTexels = number("contact_gap_texels"), r.shadowLightPercent = number("shadow_light_percent");
       r.areaMeanAbsPercent = number("area_mean_abs_percent"), r.areaOffPercent = number("area_off_percent");
       for (const auto& p : m.value("penumbra", nlohmann::json::array()))
-        r.penumbra.push_back({p.at("distance").get<double>(), p.at("theory").get<double>(),
-                              p.at("width").get<double>(), p.at("reference_width").get<double>()});
+        r.penumbra.push_back({p.at("distance").get<double>(), p.at("theory").get<double>(), p.at("width").get<double>(),
+                              p.at("reference_width").get<double>()});
     }
   } catch (const nlohmann::json::exception& e) {
     throw Error("the run record " + path.string() + " is malformed: " + e.what());

@@ -48,9 +48,10 @@ struct Light {
 /// ground that runs along world x, crossed along z. Ground pixels with x in `x` and z in `z` are cut
 /// into `bins` slabs along x, and each slab's visibility profile across z gives one width.
 struct PenumbraProbe {
-  bool on = false;     ///< the scene has one
-  glm::vec2 x{0}, z{0};  ///< world x and z ranges
-  int bins = 10;       ///< slabs along x
+  bool on = false;  ///< the scene has one
+  glm::vec2 x{0};   ///< the world x range [lo, hi]
+  glm::vec2 z{0};   ///< the world z range [lo, hi]
+  int bins = 10;    ///< slabs along x
 };
 
 /// A loaded scene file.

@@ -71,7 +71,8 @@ std::vector<glm::vec2> lightDiskPattern(int count) {
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const uint32_t k = uint32_t(j * n + i);
-      out.push_back(0.5f * concentric((float(i) + hash01(2 * k)) / float(n), (float(j) + hash01(2 * k + 1)) / float(n)));
+      out.push_back(0.5f *
+                    concentric((float(i) + hash01(2 * k)) / float(n), (float(j) + hash01(2 * k + 1)) / float(n)));
     }
   return out;
 }
@@ -84,7 +85,8 @@ FloatImage areaLightVisibility(const RayScene& rays, const Light& light, int wid
   const glm::vec3 t = glm::normalize(glm::cross(d, std::abs(d.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0)));
   const glm::vec3 b = glm::cross(d, t);
   std::vector<glm::vec3> points;
-  for (const glm::vec2 p : lightDiskPattern(samples)) points.push_back(light.position + light.size * (p.x * t + p.y * b));
+  for (const glm::vec2 p : lightDiskPattern(samples))
+    points.push_back(light.position + light.size * (p.x * t + p.y * b));
   forRows(height, [&](int y) {
     for (int x = 0; x < width; ++x) {
       const size_t i = size_t(y) * size_t(width) + size_t(x);
@@ -156,7 +158,8 @@ std::vector<PenumbraSlab> measurePenumbra(const PenumbraProbe& probe, const Floa
       const glm::vec3 dir = (light.position - p) / len;
       const float hit = rays.firstHit(p, dir, 1e-3f, len);
       const double zR = glm::dot(p - light.position, axis), zB = glm::dot(p + hit * dir - light.position, axis);
-      if (hit < len && zB > 0) slab.distance = zR - zB, slab.theory = diskTenNinetyFraction() * light.size * (zR - zB) / zB;
+      if (hit < len && zB > 0)
+        slab.distance = zR - zB, slab.theory = diskTenNinetyFraction() * light.size * (zR - zB) / zB;
     }
     out.push_back(slab);
   }

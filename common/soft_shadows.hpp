@@ -23,10 +23,10 @@ FloatImage areaLightVisibility(const RayScene& rays, const Light& light, int wid
 
 /// One slab of a penumbra probe (Scene::penumbraProbe).
 struct PenumbraSlab {
-  double x = 0;               ///< the slab's centre, world x
-  double distance = 0;        ///< receiver - blocker distance along the light's axis (at the edge)
-  double theory = 0;          ///< 10-90% width the parallel-planes formula predicts for a disk light
-  double width = -1;          ///< 10-90% width of the rendered visibility across the edge (-1: none found)
+  double x = 0;                ///< the slab's centre, world x
+  double distance = 0;         ///< receiver - blocker distance along the light's axis (at the edge)
+  double theory = 0;           ///< 10-90% width the parallel-planes formula predicts for a disk light
+  double width = -1;           ///< 10-90% width of the rendered visibility across the edge (-1: none found)
   double referenceWidth = -1;  ///< the same, of the area-light reference
 };
 

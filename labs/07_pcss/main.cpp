@@ -90,8 +90,8 @@ class PcssLab : public wb::Lab {
   }
 
   static constexpr int kCounts[4] = {16, 25, 32, 64};
-  wb::Program* depthProgram = nullptr;        // PASS 1
-  wb::Program* scenePrograms[2] = {};         // PASS 2, one per pcss.method
+  wb::Program* depthProgram = nullptr;  // PASS 1
+  wb::Program* scenePrograms[2] = {};   // PASS 2, one per pcss.method
   wb::ShadowMap shadowMap;
   int method = 0;                // pcss.method
   int searchSamples = 0;         // 16 taps

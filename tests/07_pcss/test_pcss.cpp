@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <functional>
+#include <iomanip>
 
 using wb::test::GlTest;
 
@@ -51,8 +52,8 @@ struct Taps {
 };
 
 // Emulates 07.2: the mean distance of the blockers among `samples` taps, and how many.
-glm::dvec2 findBlockers(const Map& m, const Taps& t, glm::dvec2 uv, double zR, double width, int samples,
-                        double angle, double bias) {
+glm::dvec2 findBlockers(const Map& m, const Taps& t, glm::dvec2 uv, double zR, double width, int samples, double angle,
+                        double bias) {
   double sum = 0, count = 0;
   for (int k = 0; k < samples; ++k) {
     const glm::dvec2 p = uv + t.at(k, angle, width);
@@ -68,28 +69,29 @@ glm::dvec2 findBlockers(const Map& m, const Taps& t, glm::dvec2 uv, double zR, d
 // The light's disk (width L on the map at the near plane) seen from a receiver at zR: the lines from
 // the receiver to the disk's edges cross the near plane L (zR - zNear) / zR apart.
 TEST_F(GlTest, Ex07_1_SearchRegionShrinksTowardsTheNearPlane) {
-  const std::vector<glm::vec4> in = {{0.2f, 4, 1, 0},  {0.2f, 1, 1, 0},   {0.1f, 10, 2, 0},
+  const std::vector<glm::vec4> in = {{0.2f, 4, 1, 0},    {0.2f, 1, 1, 0},     {0.1f, 10, 2, 0},
                                      {0.5f, 3, 0.5f, 0}, {0.05f, 2.5f, 2, 0}, {0.3f, 8, 1, 0}};
   const std::vector<double> want = {0.2 * 3 / 4, 0, 0.1 * 8 / 10, 0.5 * 2.5 / 3, 0.05 * 0.5 / 2.5, 0.3 * 7 / 8};
   std::vector<glm::vec4> got;
   WB_RUN_GLSL(got, "07.1", "result.x = pcssSearchWidth(IN(0).x, IN(0).y, IN(0).z);", int(in.size()), 1, in);
   for (size_t k = 0; k < in.size(); ++k)
-    ASSERT_NEAR(got[k].x, want[k], 1e-5) << "WRONG: pcssSearchWidth(lightSizeUV " << in[k].x << ", zReceiver "
-                                         << in[k].y << ", zNear " << in[k].z << ")";
+    ASSERT_NEAR(got[k].x, want[k], 1e-5) << std::setprecision(4) << "WRONG: pcssSearchWidth(lightSizeUV " << in[k].x
+                                         << ", zReceiver " << in[k].y << ", zNear " << in[k].z << ")";
 }
 
 // --- 07.3: the penumbra ----------------------------------------------------------------------------
 // Similar triangles: a blocker at zB between a light of width L and a receiver at zR leaves a
 // penumbra (zR - zB) / zB * L wide: 0 at contact, L where the blocker is halfway.
 TEST_F(GlTest, Ex07_3_PenumbraFromSimilarTriangles) {
-  const std::vector<glm::vec4> in = {{4, 2, 0.2f, 0}, {4, 4, 0.2f, 0}, {6, 4.6f, 0.8f, 0}, {9, 3, 1, 0}, {5, 4.5f, 0.3f, 0}};
+  const std::vector<glm::vec4> in = {
+      {4, 2, 0.2f, 0}, {4, 4, 0.2f, 0}, {6, 4.6f, 0.8f, 0}, {9, 3, 1, 0}, {5, 4.5f, 0.3f, 0}};
   const std::vector<double> want = {0.2, 0, 0.8 * 1.4 / 4.6, 2, 0.3 * 0.5 / 4.5};
   std::vector<glm::vec4> got;
   WB_RUN_GLSL(got, "07.3", "result.x = pcssPenumbraWidth(IN(0).x, IN(0).y, IN(0).z);", int(in.size()), 1, in);
   for (size_t k = 0; k < in.size(); ++k)
     ASSERT_NEAR(got[k].x, want[k], 1e-5 * std::max(1.0, want[k]))
-        << "WRONG: pcssPenumbraWidth(zReceiver " << in[k].x << ", zBlocker " << in[k].y << ", lightSize " << in[k].z
-        << ")";
+        << std::setprecision(4) << "WRONG: pcssPenumbraWidth(zReceiver " << in[k].x << ", zBlocker " << in[k].y
+        << ", lightSize " << in[k].z << ")";
 }
 
 // --- 07.2: the blocker search -----------------------------------------------------------------------
@@ -115,10 +117,11 @@ TEST_F(GlTest, Ex07_2_AveragesOnlyTheBlockers) {
     const glm::dvec2 want = findBlockers(map, taps, {a.x, a.y}, b.x, a.z, int(b.y), a.w, b.z);
     // A tap within rounding of a texel edge may fall either way: one tap of slack in the count,
     // and in the mean the change one tap makes.
-    ASSERT_NEAR(got[k].y, want.y, 1.0) << "WRONG: the number of blockers among " << b.y << " taps, receiver at "
-                                       << b.x << ", search width " << a.z << ", case " << k;
+    ASSERT_NEAR(got[k].y, want.y, 1.0) << std::setprecision(4) << "WRONG: the number of blockers among " << b.y
+                                       << " taps, receiver at " << b.x << ", search width " << a.z << ", case " << k;
     const double slack = want.y > 1 ? 2.0 / (want.y - 1) + 1e-3 : 1e-3;
-    ASSERT_NEAR(got[k].x, want.x, slack) << "WRONG: the mean distance of the blockers (only the taps closer than "
+    ASSERT_NEAR(got[k].x, want.x, slack) << std::setprecision(4)
+                                         << "WRONG: the mean distance of the blockers (only the taps closer than "
                                          << "the receiver) among " << b.y << " taps, receiver at " << b.x
                                          << ", search width " << a.z << ", case " << k;
   }
@@ -156,8 +159,8 @@ double emulatePcss(const Map& m, const Taps& t, glm::dvec2 uv, double zR, const 
 TEST_F(GlTest, Ex07_4_PcssFollowsThePenumbraAcrossAnEdge) {
   Taps taps;
   WB_RUN_GLSL(taps.disk, "07.4", "result = vec4(WB_POISSON_DISK[wb_i], 0.0, 0.0);", 64, 1, {});
-  for (const PcssCase& c : {PcssCase{6.5, 0.3, 0.004, 32, 32}, PcssCase{2.5, 0.3, 0.004, 16, 25},
-                            PcssCase{4.0, 0.15, 0.05, 25, 64}}) {
+  for (const PcssCase& c :
+       {PcssCase{6.5, 0.3, 0.004, 32, 32}, PcssCase{2.5, 0.3, 0.004, 16, 25}, PcssCase{4.0, 0.15, 0.05, 25, 64}}) {
     const Map map([&](int x, int) { return x < kSize / 2 ? c.zBlocker : kFar; });
     std::vector<glm::vec4> in, pixels;
     for (int k = 0; k < 24; ++k) {
@@ -176,9 +179,9 @@ TEST_F(GlTest, Ex07_4_PcssFollowsThePenumbraAcrossAnEdge) {
     for (size_t k = 0; k < in.size(); ++k) {
       const double want = emulatePcss(map, taps, {in[k].x, in[k].y}, in[k].z, c, 2 * M_PI * hash[k].x);
       ASSERT_NEAR(got[k].x, want, 1.0 / c.filterSamples + 1e-4)
-          << "WRONG: blockers at " << c.zBlocker << " left of u = 0.5, receiver at 8, u = " << in[k].x
-          << ", light " << c.lightSizeUV << " uv wide, " << c.searchSamples << " search and " << c.filterSamples
-          << " filter taps, case " << k;
+          << std::setprecision(4) << "WRONG: blockers at " << c.zBlocker
+          << " left of u = 0.5, receiver at 8, u = " << in[k].x << ", light " << c.lightSizeUV << " uv wide, "
+          << c.searchSamples << " search and " << c.filterSamples << " filter taps, case " << k;
     }
     ASSERT_EQ(got.back().x, 1.0f) << "WRONG: with no blocker in the search region PCSS is exactly 1 (the early out)";
   }
@@ -197,8 +200,9 @@ TEST_F(GlTest, Ex07_4_PcssFullShadowAndFullLight) {
                 int(in.size()), 1, in, {map.texture.id()});
     for (size_t k = 0; k < in.size(); ++k)
       ASSERT_EQ(got[k].x, z < kFar ? 0.0f : 1.0f)
-          << "WRONG: " << (z < kFar ? "every tap is a blocker: the receiver is in full shadow (0)"
-                                    : "no tap is a blocker: the receiver is fully lit (1)")
+          << "WRONG: "
+          << (z < kFar ? "every tap is a blocker: the receiver is in full shadow (0)"
+                       : "no tap is a blocker: the receiver is fully lit (1)")
           << ", case " << k;
   }
 }
@@ -223,8 +227,7 @@ TEST(Lab07, Ex07_4_ScenePlank) {
   wb::test::expectSceneMatchesGolden("07.4", "plank", wb::test::labArgs({}), kTol, kMaxFraction);
 }
 TEST(Lab07, Ex07_4_SceneOverlap) {
-  wb::test::expectSceneMatchesGolden("07.4", "overlap", wb::test::labArgs({}, "pcss_overlap.json"), kTol,
-                                     kMaxFraction);
+  wb::test::expectSceneMatchesGolden("07.4", "overlap", wb::test::labArgs({}, "pcss_overlap.json"), kTol, kMaxFraction);
 }
 
 // Against the truth: the area light's visible fraction, ray-traced (64 rays a pixel). On the pixels

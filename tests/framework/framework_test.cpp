@@ -79,6 +79,17 @@ TEST(Scene, ErrorsNameTheFileTheFieldAndTheReason) {
   EXPECT_NE(sceneError(R"({"objects": [{"shape": "sphere", "radius": -1}], "lights": [{}]})")
                 .find("radius: must be greater than 0"),
             std::string::npos);
+  // Lab 07's fields: a light's size (spot lights only, not negative) and the penumbra probe.
+  const std::string size = sceneError(R"({"objects": [{"shape": "box"}], "lights": [{"type": "spot", "size": -1}]})");
+  EXPECT_NE(size.find("lights[0].size: a light's size"), std::string::npos) << size;
+  const std::string sun = sceneError(R"({"objects": [{"shape": "box"}], "lights": [{"size": 0.5}]})");
+  EXPECT_NE(sun.find("only spot lights have one"), std::string::npos) << sun;
+  const std::string probe =
+      sceneError(R"({"objects": [{"shape": "box"}], "lights": [{}], "penumbra_probe": {"x": [1, 0], "z": [0, 1]}})");
+  EXPECT_NE(probe.find("penumbra_probe.x: must be [lo, hi]"), std::string::npos) << probe;
+  const std::string bins = sceneError(
+      R"({"objects": [{"shape": "box"}], "lights": [{}], "penumbra_probe": {"x": [0, 1], "z": [0, 1], "bins": 0}})");
+  EXPECT_NE(bins.find("penumbra_probe.bins: must be 1 to 100"), std::string::npos) << bins;
 }
 
 TEST(Scene, TheCanonicalSceneLoadsWithBoundsAndBookmarks) {

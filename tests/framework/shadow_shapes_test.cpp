@@ -182,7 +182,7 @@ TEST_F(GlTest, MeasurementsOfOneShapeAreSkippedForOthers) {
   const wb::LightView light = cube.describe(scene.lights[0], faceMatrices({0, 2, 0}, 0.5f, 10), true);
   const wb::CompareChoice none;
   wb::Measurement measurement;
-  const wb::MeasureResult r = measurement.measure({target, scene, 0.5f, light, scene.lights[0], none, nullptr});
+  const wb::MeasureResult r = measurement.measure({target, scene, 0.5f, light, scene.lights[0], none, nullptr, 64});
   EXPECT_EQ(r.gapTexels, -1);
   EXPECT_EQ(r.reference.pixels, 0);
   EXPECT_NE(r.notes.find("cube map"), std::string::npos) << r.notes;

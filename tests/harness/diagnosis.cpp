@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -82,16 +83,20 @@ std::string knownMistake(const std::string& test, double got) {
     return in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
   }();
   if (!hints.is_object() || !hints.contains("hints")) return "";
+  std::vector<std::string> found;  // several mistakes can give the same value: name them all
   for (const auto& h : hints["hints"]) {
     if (h.value("test", "") != test || !h.contains("value")) continue;
-    if (h["value"].is_null()) {  // a NaN (JSON has none): a division by zero, say
-      if (std::isnan(got)) return h.value("hint", "");
-      continue;
-    }
-    const double want = h["value"].get<double>();
-    if (std::abs(got - want) <= 1e-3 * std::max(1e-6, std::abs(want))) return h.value("hint", "");
+    const bool same =
+        h["value"].is_null()  // NaN or infinity (JSON has neither): a division by zero
+            ? !std::isfinite(got)
+            : std::abs(got - h["value"].get<double>()) <= 1e-3 * std::max(1e-6, std::abs(h["value"].get<double>()));
+    const std::string hint = h.value("hint", "");
+    if (same && std::find(found.begin(), found.end(), hint) == found.end()) found.push_back(hint);
   }
-  return "";
+  if (found.size() <= 1) return found.empty() ? "" : found[0];
+  std::string all = "one of these:";
+  for (const auto& f : found) all += "\n            - " + f;
+  return all;
 }
 
 Diagnosis diagnose(const std::string& test, const std::string& message) {
@@ -113,7 +118,8 @@ Diagnosis diagnose(const std::string& test, const std::string& message) {
     if (!d.got) d.got = firstNumber(d.headline);
     if (d.got)
       if (const std::string hint = knownMistake(test, *d.got); !hint.empty())
-        d.details.push_back("looks like a known mistake: " + hint);
+        d.details.push_back(hint.rfind("one of these:", 0) == 0 ? "looks like a known mistake, " + hint
+                                                                : "looks like a known mistake: " + hint);
   }
   for (const auto& l : lines)
     if (const auto at = l.find("diff: "); at != std::string::npos && l.find_first_not_of(' ') == at)

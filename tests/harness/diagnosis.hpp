@@ -23,7 +23,8 @@ struct Diagnosis {
 Diagnosis diagnose(const std::string& test, const std::string& message);
 
 /// The hint of a known mistake whose recorded value for `test` is `got` (relative difference below
-/// 1e-3), from tests/hints/<lab>.json; "" when none matches.
+/// 1e-3), from tests/hints/<lab>.json; "" when none matches; "one of these:" and a line per hint when
+/// several mistakes give that value.
 std::string knownMistake(const std::string& test, double got);
 
 }  // namespace wb::test
