@@ -1,9 +1,10 @@
 /// @file ground_truth.hpp
-/// Exact light visibility, by casting rays against the scene's triangles (the same triangles the
-/// labs rasterise, alpha-tested leaves included), and the artifact metrics every technique is
+/// Exact light visibility, by casting rays against the scene's triangles (RayScene: the same
+/// triangles the labs rasterise, alpha-tested leaves included), and the artifact metrics every technique is
 /// measured with: acne (lit surfaces drawn shadowed) and light leaking (shadowed surfaces drawn lit).
 #pragma once
 #include "common/image.hpp"
+#include "common/ray_scene.hpp"
 #include "common/scene.hpp"
 
 #include <glm/glm.hpp>
@@ -12,26 +13,6 @@
 #include <vector>
 
 namespace wb {
-
-/// The scene's triangles in world space, in a bounding-volume hierarchy for shadow rays.
-class RayScene {
- public:
-  /// Builds the hierarchy; textured objects are alpha-tested with `alphaCutoff` (their texture is
-  /// read with stb_image, as the renderer reads it).
-  RayScene(const Scene& scene, float alphaCutoff);
-  ~RayScene();
-  /// True if a triangle blocks the ray origin + t·dir for tMin < t < tMax.
-  bool occluded(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax) const;
-  /// True if scene object `object`'s lowest point lies within 1e-3 of height `y` (it rests there).
-  bool restsOn(int object, float y) const;
-  /// The smallest t in (tMin, tMax) where the ray meets a triangle, or tMax if it meets none;
-  /// `object` (if given) receives the index of the scene object hit, or −1.
-  float firstHit(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax, int* object = nullptr) const;
-
- private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
-};
 
 /// Exact visibility per pixel: 1 lit, 0 shadowed, NaN where nothing is measured (background,
 /// outside a spot light's cone). `positions` holds world xyz and w = +1 for a surface facing the

@@ -105,6 +105,9 @@ std::string Measurement::areaText(const MeasureInput& in, const Light& light, co
   const FloatImage area =
       areaLightVisibility(*rays_, light, rendered.width, rendered.height, positions, in.lightSamples);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  double rays = 0;  // to the disk, one per sample per light-facing pixel in the cone
+  for (size_t i = 0; i < area.pixels.size(); ++i) rays += !std::isnan(area.pixels[i]) && positions[i].w > 0;
+  rays *= in.lightSamples;
   std::vector<float> ref(area.pixels);
   // Compared where the light could reach and something is in shadow (either side below 1): the
   // share of a frame that is fully lit says nothing about a soft shadow.
@@ -116,9 +119,9 @@ std::string Measurement::areaText(const MeasureInput& in, const Light& light, co
     const ReferenceDifference d = compareWithReference(rendered, ref, x0, x1);
     if (!in.split.on || side == 1) r.area = d;
     text += strf(
-        "\nagainst the area light (%d rays a pixel, %.0f ms)%s, where either is below 1: |difference| "
-        "%.2f%%, off by > 0.1 on %.2f%%",
-        in.lightSamples, ms,
+        "\nagainst the area light (%d rays a pixel, %.0f ms, %.1f M rays/s)%s, where either is below 1: "
+        "|difference| %.2f%%, off by > 0.1 on %.2f%%",
+        in.lightSamples, ms, rays / std::max(ms, 1e-3) / 1e3,
         !in.split.on ? ""
                      : strf(", %s %s=%s", side ? "right" : "left", in.split.key.c_str(),
                             (side ? in.split.b : in.split.a).c_str())

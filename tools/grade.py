@@ -358,9 +358,10 @@ class Workspace:
         sync_tree(ROOT / "labs", self.stubs, lambda folder, names: {n for n in names if Path(folder, n).is_file()
                                                                     and n != "exercise.glsl"})
         self.reset_to_stubs()
-        if not (self.judge / "CMakeCache.txt").exists():
-            run_checked(["cmake", "-S", str(ROOT), "-B", str(self.judge), "-DCMAKE_BUILD_TYPE=RelWithDebInfo"],
-                        "configure the judge's build")
+        # Configured every time (a few seconds when nothing changed): a lab added since the last run
+        # is otherwise an unknown target to the old Makefiles, which never get to regenerate.
+        run_checked(["cmake", "-S", str(ROOT), "-B", str(self.judge), "-DCMAKE_BUILD_TYPE=RelWithDebInfo"],
+                    "configure the judge's build")
         targets = [t for lab in self.labs for t in (f"lab{lab['nn']}_solution", f"lab{lab['nn']}_solution_tests")]
         run_checked(["cmake", "--build", str(self.judge), "-j", str(jobs), "--target"] + targets,
                     "build the judge's build")
@@ -370,10 +371,9 @@ class Workspace:
             shutil.rmtree(self.build)  # a build of another source tree (an older grader's)
         own(self.build, self.builder, 0o755)
         env = dict(os.environ, HOME="/tmp")
-        if not (self.build / "CMakeCache.txt").exists():
-            sandbox.checked(["cmake", "-S", str(self.src), "-B", str(self.build), "-DCMAKE_BUILD_TYPE=RelWithDebInfo",
-                             "-DWB_REGISTER_TESTS=OFF"],  # (discovery would run the student's code in the build)
-                            self.builder, env, "configure the runner's build (as the builder user)")
+        sandbox.checked(["cmake", "-S", str(self.src), "-B", str(self.build), "-DCMAKE_BUILD_TYPE=RelWithDebInfo",
+                         "-DWB_REGISTER_TESTS=OFF"],  # (discovery would run the student's code in the build)
+                        self.builder, env, "configure the runner's build (as the builder user)")
         sandbox.checked(["cmake", "--build", str(self.build), "-j", str(jobs), "--target"] + self.runner_targets(self.labs),
                         self.builder, env, "build the runner's build (as the builder user)")
         self.fresh_outputs()
