@@ -168,15 +168,21 @@ MeasureResult Measurement::measure(const MeasureInput& in) {
         100 * r.reference.meanAbs(), 100 * r.reference.lighterRate(), 100 * r.reference.darkerRate());
   }
   const std::string split = in.split.on ? halves(in, rendered, exact, positions) : "";
-  const std::string area = areaText(in, light, rendered, positions, r);
+  std::string area = areaText(in, light, rendered, positions, r);
+  if (!area.empty())
+    area =
+        "\n(acne and leak above: against a point light at the disk's centre; for a light with a size, the\n"
+        "area light below is the truth)" +
+        area;
   r.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   const VisibilityMetrics& m = r.metrics;
   r.text = strf(
                "acne rate %.2f%% (%ld of %ld lit pixels drawn shadowed)\nlight leak %.2f%% (%ld of %ld shadowed "
-               "pixels drawn lit)\ncontact gap %s texels\nlight in shadows %.2f%% (mean visibility where the light "
-               "is blocked)\n(exact visibility by ray casting, %.0f ms)",
+               "pixels drawn lit)\ncontact gap %s\nlight in shadows %.2f%% (mean visibility where the light "
+               "is blocked)\n(measured in %.0f ms, the ray casting included)",
                100 * m.acneRate(), m.acnePixels, m.litPixels, 100 * m.leakRate(), m.leakPixels, m.shadowedPixels,
-               r.gapTexels < 0 ? "n/a" : strf("%.1f", r.gapTexels).c_str(), 100 * m.meanShadowLight(), r.milliseconds) +
+               r.gapTexels < 0 ? "n/a" : strf("%.1f texels", r.gapTexels).c_str(), 100 * m.meanShadowLight(),
+               r.milliseconds) +
            "\n" + pcfText + split + area;
   r.heatmap = artifactHeatmap(rendered, exact, positions);
   return r;

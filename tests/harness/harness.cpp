@@ -394,8 +394,8 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
       failing += !near;
     }
   const double fraction = double(failing + todo) / double(ref.pixels.size());
-  std::printf("[ scene    ] %s: %.3f%% of pixels differ from %s (allowed %.3f%%)\n", name.c_str(), 100 * fraction,
-              golden.filename().string().c_str(), 100 * maxFailingFraction);
+  std::printf("[ scene    ] %s %s: %.3f%% of pixels differ from %s (allowed %.3f%%)\n", id.c_str(), name.c_str(),
+              100 * fraction, golden.filename().string().c_str(), 100 * maxFailingFraction);
   if (fraction <= maxFailingFraction) return;
   // Twice the size, pixel for pixel, so that a one-pixel edge can be seen in an image viewer.
   writePng(out / "reference.png", 2 * ref.width, 2 * ref.height, doubled(toGrey(ref), ref.width, ref.height));

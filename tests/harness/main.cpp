@@ -77,6 +77,10 @@ class CheckListener : public ::testing::EmptyTestEventListener {
     auto rank = [](const wb::test::Diagnosis& x) {
       return x.verdict == "ERROR" ? 3 : x.verdict == "NOT IMPLEMENTED" ? 1 : 2;
     };
+    if (current_.empty()) {  // a test of the lab as a whole (its files, markers, manifest), not of one exercise
+      if (others_.empty() || others_.back().first != test_) others_.emplace_back(test_, std::move(d));
+      return;
+    }
     auto& slot = first_[current_];
     if (slot.verdict.empty() || rank(d) > rank(slot)) slot = std::move(d);
   }
@@ -104,6 +108,10 @@ class CheckListener : public ::testing::EmptyTestEventListener {
       if (!d.headline.empty()) std::printf("        %s\n", d.headline.c_str());
       for (const auto& line : d.details) std::printf("          %s\n", line.c_str());
     }
+    for (const auto& [test, d] : others_) {  // they fail the whole check: say so, and why
+      std::printf("  also failing, for the lab as a whole: %s\n        %s\n", test.c_str(), d.headline.c_str());
+      exitCode = 1;
+    }
     if (const char* file = std::getenv("WB_CHECK_JSON"); file && *file) std::ofstream(file) << verdicts.dump();
     if (!expectStubs_ && done != int(manifest.size())) exitCode = 1;
     std::printf("  %d of %zu exercises pass their tests.%s\n", done, manifest.size(),
@@ -120,6 +128,7 @@ class CheckListener : public ::testing::EmptyTestEventListener {
   std::string current_;        // the exercise of the running test
   std::string test_;           // and the test ("Suite.Name")
   std::map<std::string, wb::test::Diagnosis> first_;
+  std::vector<std::pair<std::string, wb::test::Diagnosis>> others_;  // failing tests of no one exercise
 };
 
 }  // namespace
@@ -148,7 +157,8 @@ TEST(Manifest, EveryExerciseHasItsMarker) {
     std::ifstream in(fs::path(wb::variant::kLabDir) / e.file);
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     EXPECT_NE(wb::findMarker(text, e.id), std::string::npos)
-        << "WRONG: labs/" << wb::variant::kLab << "/" << e.file << " has no '// EXERCISE " << e.id << "' marker";
+        << "WRONG: labs/" << wb::variant::kLab << "/" << e.file << " has no '// EXERCISE " << e.id
+        << "' line: keep the comment line above each exercise (the grader finds your exercises by it)";
   }
 }
 

@@ -1,5 +1,6 @@
 // Lab 07 exercises: percentage-closer soft shadows. Each function returns WB_TODO until you write it.
 // A body that still returns WB_TODO is reported as "not implemented". Check: ./workbook check 07
+// Keep the "// EXERCISE 07.x" lines: the grader finds each exercise by its line.
 //
 // Conventions (the tests rely on them):
 //  - depths are distances along the light's axis, in world units: zReceiver for the pixel,
