@@ -63,11 +63,8 @@ void App::loadScene(Lab& lab, const Options& o) {
                      std::to_string(lab.scene.cameras.size()));
   lab.camera.pose = lab.scene.cameras[size_t(lab.bookmark_ - 1)];
   // The scene's light size is the lab's light.size, unless the command line names that setting.
-  bool named = o.compare.key == "light.size";
-  for (const auto& s : o.sets) named = named || s.rfind("light.size=", 0) == 0;
-  for (const auto& sweep : o.sweeps) named = named || sweep.first == "light.size";
   const float size = lab.scene.lights[size_t(lab.lightIndex)].size;
-  if (lab.lightSizeUsed_ && size > 0 && !named) lab.lightSize_ = size;
+  if (lab.lightSizeUsed_ && size > 0 && !o.names("light.size")) lab.lightSize_ = size;
 }
 
 int App::main(int argc, char** argv, std::unique_ptr<Lab> lab) {

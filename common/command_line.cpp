@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <sstream>
 
@@ -148,6 +149,13 @@ std::string usageText(const std::string& exe, const std::string& defaultScene) {
     text += left + help + "\n";
   }
   return text;
+}
+
+bool Options::names(const std::string& key) const {
+  if (compare.on && compare.key == key) return true;
+  for (const auto& s : sets)
+    if (s.rfind(key + "=", 0) == 0) return true;
+  return std::any_of(sweeps.begin(), sweeps.end(), [&](const auto& sweep) { return sweep.first == key; });
 }
 
 }  // namespace wb

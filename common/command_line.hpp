@@ -40,6 +40,8 @@ struct Options {
   std::vector<std::string> sets;  ///< --set key=value, in order
   std::vector<std::pair<std::string, std::vector<std::string>>> sweeps;  ///< --sweep key=a,b,...
   CompareChoice compare;                                                 ///< --compare key=a,b
+  /// True if --set, --sweep or --compare names setting `key`.
+  bool names(const std::string& key) const;
 };
 
 /// Parses the arguments after argv[0]; throws wb::UsageError naming the bad argument and what is

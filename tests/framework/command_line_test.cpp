@@ -43,3 +43,11 @@ TEST(CommandLineTable, ValuesAreParsedAndCheckedByTheTable) {
   const char* missing[] = {"lab", "--scene"};
   EXPECT_THROW(wb::parseCommandLine(2, missing), wb::UsageError);
 }
+
+// What the command line sets, a scene may not override (lab 07's light.size starts at the scene's).
+TEST(CommandLineTable, NamesTheSettingsItSets) {
+  const char* argv[] = {"lab", "--set", "a=1", "--compare", "k=x,y", "--sweep", "s=1,2", "--set", "ab=3"};
+  const wb::Options o = wb::parseCommandLine(int(std::size(argv)), argv);
+  for (const char* key : {"a", "k", "s", "ab"}) EXPECT_TRUE(o.names(key)) << key;
+  for (const char* key : {"b", "x", "light.size", "a=1"}) EXPECT_FALSE(o.names(key)) << key;
+}
