@@ -1,6 +1,7 @@
 #include "common/ground_truth.hpp"
 
 #include "common/error.hpp"
+#include "common/parallel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,32 +13,29 @@ namespace wb {
 FloatImage exactVisibility(const RayScene& rays, const Light& light, int width, int height,
                            const std::vector<glm::vec4>& positions) {
   FloatImage out{width, height, std::vector<float>(size_t(width) * size_t(height))};
-  const float nan = std::numeric_limits<float>::quiet_NaN();
   const float cosCone = std::cos(glm::radians(light.angle));
-  for (size_t i = 0; i < out.pixels.size(); ++i) {
-    const glm::vec4 p = positions[i];
-    if (p.w == 0) {
-      out.pixels[i] = nan;
-      continue;
-    }  // background
+  // One pixel: NaN where nothing is measured, 0 for a surface facing away, else one ray.
+  auto visibility = [&](const glm::vec4& p) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    if (p.w == 0) return nan;  // background
     glm::vec3 toLight = -light.direction;
     float tMax = std::numeric_limits<float>::infinity();
     if (light.type != LightType::Directional) {
       toLight = light.position - glm::vec3(p);
       tMax = glm::length(toLight);
       toLight /= tMax;
-      if (light.type == LightType::Spot && glm::dot(-toLight, light.direction) < cosCone) {
-        out.pixels[i] = nan;
-        continue;
-      }
+      if (light.type == LightType::Spot && glm::dot(-toLight, light.direction) < cosCone) return nan;
     }
-    if (p.w < 0) {
-      out.pixels[i] = 0;
-      continue;
-    }  // facing away: an attached shadow
+    if (p.w < 0) return 0.0f;  // facing away: an attached shadow
     // Start a little way along the ray so the surface does not shadow itself through rounding.
-    out.pixels[i] = rays.occluded(glm::vec3(p), toLight, 1e-3f, tMax) ? 0.0f : 1.0f;
-  }
+    return rays.occluded(glm::vec3(p), toLight, 1e-3f, tMax) ? 0.0f : 1.0f;
+  };
+  forEachRow(height, [&](int y) {
+    for (int x = 0; x < width; ++x) {
+      const size_t i = size_t(y) * size_t(width) + size_t(x);
+      out.pixels[i] = visibility(positions[i]);
+    }
+  });
   return out;
 }
 

@@ -1,9 +1,10 @@
 #include "common/soft_shadows.hpp"
 
+#include "common/parallel.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <thread>
 
 namespace wb {
 namespace {
@@ -21,18 +22,6 @@ glm::vec2 concentric(float u, float v) {
   const bool wide = std::abs(a) > std::abs(b);
   const float r = wide ? a : b, phi = wide ? quarter * (b / a) : 2 * quarter - quarter * (a / b);
   return r * glm::vec2(std::cos(phi), std::sin(phi));
-}
-
-// Runs body(row) for every row on every core.
-template <class F>
-void forRows(int height, F body) {
-  const int threads = std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t)
-    pool.emplace_back([=] {
-      for (int y = t; y < height; y += threads) body(y);
-    });
-  for (auto& th : pool) th.join();
 }
 
 // The 10-90% crossings of a profile (mean visibility per z bin, NaN for an empty bin), around its
@@ -87,7 +76,7 @@ FloatImage areaLightVisibility(const RayScene& rays, const Light& light, int wid
   std::vector<glm::vec3> points;
   for (const glm::vec2 p : lightDiskPattern(samples))
     points.push_back(light.position + light.size * (p.x * t + p.y * b));
-  forRows(height, [&](int y) {
+  forEachRow(height, [&](int y) {
     for (int x = 0; x < width; ++x) {
       const size_t i = size_t(y) * size_t(width) + size_t(x);
       if (std::isnan(out.pixels[i]) || positions[i].w <= 0) continue;
