@@ -99,11 +99,10 @@ std::string Measurement::halves(const MeasureInput& in, const FloatImage& render
 
 // Soft shadows: the frame against the visible fraction of the light's disk, and the penumbra probe.
 std::string Measurement::areaText(const MeasureInput& in, const Light& light, const FloatImage& rendered,
-                                  const std::vector<glm::vec4>& positions, MeasureResult& r) {
+                                  const FloatImage& exact, const std::vector<glm::vec4>& positions, MeasureResult& r) {
   if (light.size <= 0 || light.type != LightType::Spot) return "";
   const auto t0 = std::chrono::steady_clock::now();
-  const FloatImage area =
-      areaLightVisibility(*rays_, light, rendered.width, rendered.height, positions, in.lightSamples);
+  const FloatImage area = areaLightVisibility(*rays_, light, exact, positions, in.lightSamples);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   double rays = 0;  // to the disk, one per sample per light-facing pixel in the cone
   for (size_t i = 0; i < area.pixels.size(); ++i) rays += !std::isnan(area.pixels[i]) && positions[i].w > 0;
@@ -168,7 +167,7 @@ MeasureResult Measurement::measure(const MeasureInput& in) {
         100 * r.reference.meanAbs(), 100 * r.reference.lighterRate(), 100 * r.reference.darkerRate());
   }
   const std::string split = in.split.on ? halves(in, rendered, exact, positions) : "";
-  std::string area = areaText(in, light, rendered, positions, r);
+  std::string area = areaText(in, light, rendered, exact, positions, r);
   if (!area.empty())
     area =
         "\n(acne and leak above: against a point light at the disk's centre; for a light with a size, the\n"

@@ -59,7 +59,7 @@ class Measurement {
   const std::vector<float>* pcfReference(const MeasureInput& in, int side);
   std::string halves(const MeasureInput& in, const FloatImage& rendered, const FloatImage& exact,
                      const std::vector<glm::vec4>& positions);
-  std::string areaText(const MeasureInput& in, const Light& light, const FloatImage& rendered,
+  std::string areaText(const MeasureInput& in, const Light& light, const FloatImage& rendered, const FloatImage& exact,
                        const std::vector<glm::vec4>& positions, MeasureResult& r);
   std::unique_ptr<RayScene> rays_;
   const Scene* raysScene_ = nullptr;

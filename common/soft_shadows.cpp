@@ -66,17 +66,18 @@ std::vector<glm::vec2> lightDiskPattern(int count) {
   return out;
 }
 
-FloatImage areaLightVisibility(const RayScene& rays, const Light& light, int width, int height,
+FloatImage areaLightVisibility(const RayScene& rays, const Light& light, const FloatImage& exact,
                                const std::vector<glm::vec4>& positions, int samples) {
-  if (light.size <= 0 || light.type != LightType::Spot) return exactVisibility(rays, light, width, height, positions);
-  FloatImage out = exactVisibility(rays, light, width, height, positions);  // NaN and facing-away pixels
+  FloatImage out = exact;  // its NaN and facing-away pixels stay
+  if (light.size <= 0 || light.type != LightType::Spot) return out;
+  const int width = exact.width;
   const glm::vec3 d = glm::normalize(light.direction);
   const glm::vec3 t = glm::normalize(glm::cross(d, std::abs(d.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0)));
   const glm::vec3 b = glm::cross(d, t);
   std::vector<glm::vec3> points;
   for (const glm::vec2 p : lightDiskPattern(samples))
     points.push_back(light.position + light.size * (p.x * t + p.y * b));
-  forEachRow(height, [&](int y) {
+  forEachRow(exact.height, [&](int y) {
     for (int x = 0; x < width; ++x) {
       const size_t i = size_t(y) * size_t(width) + size_t(x);
       if (std::isnan(out.pixels[i]) || positions[i].w <= 0) continue;

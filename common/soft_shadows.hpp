@@ -15,10 +15,10 @@ namespace wb {
 std::vector<glm::vec2> lightDiskPattern(int count);
 
 /// The visible fraction of `light`'s disk (diameter `light.size`, facing `light.direction`) from each
-/// pixel: NaN where nothing is measured (background, outside the cone), 0 on surfaces facing away,
-/// else the share of the `samples` rays that reach the disk. With `light.size` 0 it is exact
-/// visibility. Uses every core.
-FloatImage areaLightVisibility(const RayScene& rays, const Light& light, int width, int height,
+/// pixel, starting from `exact` (exactVisibility() of the same frame): its NaN (background, outside
+/// the cone) and 0 on surfaces facing away are kept, every other pixel gets the share of the
+/// `samples` rays that reach the disk. With `light.size` 0 it is `exact`. Uses every core.
+FloatImage areaLightVisibility(const RayScene& rays, const Light& light, const FloatImage& exact,
                                const std::vector<glm::vec4>& positions, int samples);
 
 /// One slab of a penumbra probe (Scene::penumbraProbe).
