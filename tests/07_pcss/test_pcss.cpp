@@ -244,15 +244,6 @@ TEST(Lab07, Ex07_4_MeasuredCloseToTheAreaLight) {
                                  << "% of the shadow's pixels are off the area light by more than 0.1";
 }
 
-namespace {
-// The least-squares slope of y against x.
-double slope(const std::vector<std::array<double, 4>>& rows, int x, int y) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0, n = double(rows.size());
-  for (const auto& r : rows) sx += r[x], sy += r[y], sxx += r[x] * r[x], sxy += r[x] * r[y];
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-}  // namespace
-
 // Contact hardening, as a number: along the leaning plank the penumbra's 10-90% width grows with
 // the receiver-blocker distance at the rate the parallel-planes formula gives (the solution: within
 // 1% at 480x270; the area light's own widths grow 4% faster).
@@ -264,7 +255,7 @@ TEST(Lab07, Ex07_4_MeasuredPenumbraFollowsTheTheory) {
   for (const auto& r : m.penumbra)
     ASSERT_GT(r[2], 0) << "WRONG: no 10-90% penumbra found across the plank's shadow edge at receiver-blocker "
                        << "distance " << r[0] << " (is the shadow there at all?)";
-  const double ratio = slope(m.penumbra, 0, 2) / slope(m.penumbra, 0, 1);
+  const double ratio = wb::test::penumbraGrowthRatio(m);
   EXPECT_NEAR(ratio, 1.0, 0.25) << "WRONG: the penumbra grows " << ratio
                                 << " times as fast as the theory says, with the receiver-blocker distance";
 }

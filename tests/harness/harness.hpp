@@ -87,6 +87,10 @@ struct SceneMetrics {
 /// Runs the lab at 480x270 with `--metrics` and `args`; see SceneMetrics.
 SceneMetrics measureScene(const std::string& id, const std::string& name, const std::vector<std::string>& args);
 
+/// How fast the rendered penumbra grows with the receiver-blocker distance, over how fast the
+/// theory's does: the ratio of their least-squares slopes over `m.penumbra` (1 is the theory).
+double penumbraGrowthRatio(const SceneMetrics& m);
+
 /// Layer 2: renders a golden case with the lab itself (`--headless --size 256x256` plus `args`),
 /// with exercise `id` isolated, and compares its visibility with tests/golden/<lab>/<name>.pfm (a
 /// held-out case, `name` = "hidden/NAME", with tests/hidden/<lab>/golden/NAME.pfm).
