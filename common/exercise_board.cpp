@@ -61,7 +61,12 @@ void ExerciseBoard::probe() {
   // One kernel per file: probe k writes result k, so a file costs one compile however many it has.
   std::map<std::string, std::vector<const Probe*>> byFile;
   for (const auto& p : probes_) byFile[p.file].push_back(&p);
+  // Probes may read wb_tex0 (a 2D texture) and wb_tex1 (a cube map, for lab 08's lookups).
   Texture dummy = makeTexture2D(GL_R32F, 1, 1);
+  GLuint cubeId = 0;
+  glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &cubeId);
+  Texture cube(cubeId);
+  glTextureStorage2D(cube.id(), 1, GL_R32F, 1, 1);
   for (const auto& [file, probes] : byFile) {
     std::string body;
     for (size_t k = 0; k < probes.size(); ++k)
@@ -69,7 +74,7 @@ void ExerciseBoard::probe() {
     try {
       const fs::path path = findShaderFile(file, shaderSearchPath());
       probedFiles_[path] = fs::last_write_time(path);
-      auto r = runGlslKernel(readFile(path), path, body, int(probes.size()), 1, {}, {dummy.id()});
+      auto r = runGlslKernel(readFile(path), path, body, int(probes.size()), 1, {}, {dummy.id(), cube.id()});
       for (size_t k = 0; k < probes.size(); ++k)
         set(probes[k]->id, isTodo(r[k].x) ? ExerciseState::NotImplemented : ExerciseState::Implemented,
             isTodo(r[k].x) ? "the GLSL function still returns WB_TODO" : "");

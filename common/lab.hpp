@@ -70,7 +70,8 @@ class Lab {
   /// Builds a program that is hot-reloaded with the others; a broken edit keeps the last good one.
   Program& loadProgram(std::vector<ShaderStage> stages, std::string defines = {});
   /// Registers a GLSL exercise and the expression that probes whether it is implemented; the
-  /// expression is evaluated in a compute shader with `file` included and compared with WB_TODO.
+  /// expression is evaluated in a compute shader with `file` included and compared with WB_TODO; it
+  /// may read wb_tex0 (a 2D texture) and wb_tex1 (a cube map).
   void glslExercise(const std::string& id, const std::string& file, const std::string& probe) {
     board_.addProbe(id, file, probe);
   }

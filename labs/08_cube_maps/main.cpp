@@ -1,0 +1,109 @@
+// Lab 08: point lights and cube shadow maps
+// ---------------------------------------------------------------------------------------------
+// Difficulty: 3/5. Handout: README.md beside this file.
+// Exercises:  08.1 in exercise.cpp; 08.2, 08.4 and 08.5 in shaders/exercise.glsl.
+// Controls:   drag to orbit, wheel to zoom, 1-9 camera bookmarks, F12 screenshot.
+// A point light shines every way, so one perspective map cannot hold its shadows: six can, one per
+// face of a cube around the light. Each face is a 90° square frustum with its own up vector; the
+// map stores the distance to the light, and the lookup needs no matrix at all, only the direction.
+#include "common/lab.hpp"
+#include "exercise.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace {
+
+class CubeLab : public wb::Lab {
+ public:
+  CubeLab() : Lab("scenes/cube_lantern.json") {
+    settings.addChoice("cube.filter", filter, {"hard", "pcf"}, "hard: one lookup (08.4); pcf: 3D offsets (08.5)");
+    settings.addChoice("cube.pcf_samples", samples, {"16", "32", "64"}, "pcf: offsets per pixel");
+    settings.add("cube.pcf_radius", radius, 0.005f, 0.2f, "pcf: the offsets' length in world units");
+    settings.assign("shadow.map_size=512");  // per face: six of them
+    useDepthBias(0.03f);                      // in world units: the map stores distances
+    useLightFaces();
+  }
+
+ protected:
+  void init() override {
+    depthProgram =
+        &loadProgram({{GL_VERTEX_SHADER, "depth_cube.vert"}, {GL_FRAGMENT_SHADER, "depth_cube.frag"}});
+    for (int f = 0; f < 2; ++f)  // one variant per filter: CUBE_FILTER is the cube.filter index
+      scenePrograms[f] = &loadProgram({{GL_VERTEX_SHADER, "wb/scene.vert"}, {GL_FRAGMENT_SHADER, "scene.frag"}},
+                                      "#define CUBE_FILTER " + std::to_string(f) + "\n");
+    glslExercise("08.2", "exercise.glsl", "cubeDepth(vec3(1.0), vec3(0.0), 10.0)");
+    glslExercise("08.4", "exercise.glsl", "cubeShadow(wb_tex1, vec3(1.0), vec3(0.0), 10.0, 0.0)");
+    glslExercise("08.5", "exercise.glsl", "cubePcf(wb_tex1, vec3(1.0), vec3(0.0), 10.0, 0.0, 0.05, 16)");
+    attempt("08.1", [] { lab08::cubeFaceViewProj(0, glm::vec3(0), 0.1f, 10); });
+  }
+
+  void render() override {
+    const wb::Light light = pointLight();
+    const glm::vec2 nearFar = nearFarFromBounds(light.position);
+    bool ready = true;
+    for (int k = 0; k < 6; ++k)
+      ready = attempt("08.1", faces[size_t(k)], [&] {
+                return lab08::cubeFaceViewProj(k, light.position, nearFar.x, nearFar.y);
+              }) && ready;
+    cube.resize(shadowMapSize());
+
+    // PASS 1: six faces, each through its own matrix, storing |p - light| / far.
+    if (ready) {
+      auto timer = timePass("shadow");
+      depthProgram->set("u_lightPos", light.position);
+      depthProgram->set("u_far", nearFar.y);
+      renderShadowMap(*depthProgram, cube, light, faces, true);
+    }
+
+    // PASS 2: the camera's view; the lookup needs only the direction from the light.
+    auto timer = timePass("lighting");
+    const wb::Program& p = *scenePrograms[filter];
+    beginCameraPass(p, faces[0], 0);
+    glBindTextureUnit(1, cube.texture());
+    p.set("u_lightPos", light.position);
+    p.set("u_far", nearFar.y);
+    p.set("u_bias", depthBias());
+    p.set("u_radius", radius);
+    p.set("u_samples", 16 << samples);
+    gpuScene->draw(p);
+  }
+
+ private:
+  // The light: the chosen one if it is a point light, else the scene's first point light.
+  wb::Light pointLight() {
+    const wb::Light& chosen = scene.lights[size_t(lightIndex)];
+    if (chosen.type == wb::LightType::Point) return chosen;
+    for (const auto& l : scene.lights)
+      if (l.type == wb::LightType::Point) {
+        warn("lab 08 needs a point light; light.index " + std::to_string(lightIndex) +
+             " is not one, so the scene's first point light is used");
+        return l;
+      }
+    throw wb::UsageError(scene.path.string() + " has no point light; lab 08 needs one (try scenes/cube_lantern.json)");
+  }
+
+  // Near and far from the scene: the nearest and farthest vertex from the light (near at least 2 cm).
+  glm::vec2 nearFarFromBounds(const glm::vec3& light) const {
+    float nearest = 1e30f, farthest = 0;
+    for (const auto& o : scene.objects)
+      for (const auto& v : o.mesh.vertices) {
+        const float d = glm::length(glm::vec3(o.model * glm::vec4(v.position, 1)) - light);
+        nearest = std::min(nearest, d), farthest = std::max(farthest, d);
+      }
+    return {std::max(0.02f, std::min(nearest, 0.5f * farthest)), farthest * 1.01f};
+  }
+
+  wb::Program* depthProgram = nullptr;   // PASS 1
+  wb::Program* scenePrograms[2] = {};    // PASS 2, one per cube.filter
+  wb::CubeShadowMap cube;
+  std::vector<glm::mat4> faces = std::vector<glm::mat4>(6, glm::mat4(1));
+  int filter = 1;         // pcf
+  int samples = 0;        // 16 offsets
+  float radius = 0.04f;   // world units
+};
+
+}  // namespace
+
+int main(int argc, char** argv) { return wb::run<CubeLab>(argc, argv); }
