@@ -10,6 +10,7 @@ and the descriptions to the "Common mistakes" section of labs/NN_name/README.md.
 (tests/harness/diagnosis.cpp). Run it after changing a mutant or a test, and commit the result.
 """
 import json
+import os
 import subprocess
 import sys
 import tempfile
@@ -18,7 +19,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 
 
-def describe(mutant):
+def fields_of(mutant):
     fields, hint = {}, ""
     for line in mutant.read_text().splitlines():
         if line.startswith("# Mutant:") and not hint:
@@ -26,7 +27,23 @@ def describe(mutant):
         elif ":" in line and not line.startswith("#"):
             key, value = line.split(":", 1)
             fields.setdefault(key.strip(), value.strip())
+    return fields, hint
+
+
+def describe(mutant):
+    fields, hint = fields_of(mutant)
     return fields.get("exercise", ""), hint
+
+
+def mutant_command(build, mutant):
+    """How to run a mutant's tests (cmake/Lab.cmake): a C++ mistake has its own test binary; a shader
+    mistake is graded by the solution's tests, with the mutant's files as the submission."""
+    lab = mutant.parent.name
+    fields, _ = fields_of(mutant)
+    if fields.get("file", "").startswith("shaders/"):
+        env = dict(os.environ, WB_SUBMISSION_DIR=str(build / "mutants" / lab / mutant.stem))
+        return build / f"lab{lab[:2]}_solution_tests", env
+    return build / f"lab{lab[:2]}_mutant_{mutant.stem}_tests", None
 
 
 BEGIN, END = "<!-- common mistakes: written by tools/make_hints.py -->", "<!-- end of common mistakes -->"
@@ -67,12 +84,12 @@ def main():
         hints = []
         for mutant in sorted(lab_dir.glob("*.mutant")):
             exercise, hint = describe(mutant)
-            exe = build / f"lab{lab_dir.name[:2]}_mutant_{mutant.stem}_tests"
+            exe, env = mutant_command(build, mutant)
             if not exe.exists() or not hint:
                 sys.exit(f"make_hints: {exe} is not built, or {mutant} has no '# Mutant:' line")
             with tempfile.NamedTemporaryFile("r", suffix=".jsonl") as sig:
                 subprocess.run([str(exe), f"--gtest_filter=*Ex{exercise.replace('.', '_')}_*", "--signatures",
-                                sig.name], capture_output=True, timeout=600)
+                                sig.name], capture_output=True, timeout=600, env=env)
                 for line in Path(sig.name).read_text().splitlines():
                     s = json.loads(line)
                     hints.append({"exercise": exercise, "mutant": mutant.stem, "test": s["test"],

@@ -10,6 +10,8 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent.parent
+sys.path.insert(0, str(ROOT / "tools"))
+from make_hints import mutant_command  # noqa: E402  (how each mutant's tests are run)
 build = Path(sys.argv[1])
 problems, checked = [], 0
 for hints_file in sorted((ROOT / "tests/hints").glob("*.json")):
@@ -22,9 +24,9 @@ for hints_file in sorted((ROOT / "tests/hints").glob("*.json")):
         if h is None:
             print(f"note: {lab}/{mutant.stem} gives no value to recognise it by (no hint)")
             continue
-        exe = build / f"lab{lab[:2]}_mutant_{mutant.stem}_tests"
+        exe, env = mutant_command(build, mutant)
         out = subprocess.run([str(exe), f"--gtest_filter=*Ex{h['exercise'].replace('.', '_')}_*", "--check"],
-                             capture_output=True, text=True, timeout=600).stdout
+                             capture_output=True, text=True, timeout=600, env=env).stdout
         checked += 1
         # (where several mistakes give the same value, check lists them all, one "- hint" line each)
         if f"looks like a known mistake: {h['hint']}" not in out and f"- {h['hint']}" not in out:
