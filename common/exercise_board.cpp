@@ -60,7 +60,13 @@ void ExerciseBoard::addProbe(const std::string& id, const std::string& file, con
 void ExerciseBoard::probe() {
   // One kernel per file: probe k writes result k, so a file costs one compile however many it has.
   std::map<std::string, std::vector<const Probe*>> byFile;
-  for (const auto& p : probes_) byFile[p.file].push_back(&p);
+  for (const auto& p : probes_) {
+    if (p.expression.empty()) {  // a stage a kernel cannot include (a geometry shader): read its text
+      probeText(p);
+      continue;
+    }
+    byFile[p.file].push_back(&p);
+  }
   // Probes may read wb_tex0 (a 2D texture) and wb_tex1 (a cube map, for lab 08's lookups).
   Texture dummy = makeTexture2D(GL_R32F, 1, 1);
   GLuint cubeId = 0;
@@ -81,6 +87,22 @@ void ExerciseBoard::probe() {
     } catch (const Error& e) {
       for (const auto* p : probes) set(p->id, ExerciseState::Failed, e.what());
     }
+  }
+}
+
+void ExerciseBoard::probeText(const Probe& p) {
+  try {
+    const fs::path path = findShaderFile(p.file, shaderSearchPath());
+    probedFiles_[path] = fs::last_write_time(path);
+    const std::string text = readFile(path);
+    const size_t at = findMarker(text, p.id);
+    const size_t end = text.find("// EXERCISE ", at == std::string::npos ? 0 : at + 1);
+    const std::string chunk = at == std::string::npos ? text : text.substr(at, end - at);
+    const bool todo = chunk.find("WB_TODO") != std::string::npos;
+    set(p.id, todo ? ExerciseState::NotImplemented : ExerciseState::Implemented,
+        todo ? "the shader still holds WB_TODO" : "");
+  } catch (const Error& e) {
+    set(p.id, ExerciseState::Failed, e.what());
   }
 }
 

@@ -21,6 +21,9 @@ class CubeLab : public wb::Lab {
     settings.addChoice("cube.filter", filter, {"hard", "pcf"}, "hard: one lookup (08.4); pcf: 3D offsets (08.5)");
     settings.addChoice("cube.pcf_samples", samples, {"16", "32", "64"}, "pcf: offsets per pixel");
     settings.add("cube.pcf_radius", radius, 0.005f, 0.2f, "pcf: the offsets' length in world units");
+    settings.addChoice("cube.method", method, {"six_passes", "geometry"},
+                       "six_passes: the scene drawn once per face; geometry: once, a geometry shader (08.3) "
+                       "sends each triangle to all six faces");
     settings.addChoice("cube.cache", cache, {"off", "on"},
                        "on: draw the six faces only when the light, the map or its shader changes (the lantern "
                        "is static); off: every frame, to time the fill");
@@ -33,6 +36,10 @@ class CubeLab : public wb::Lab {
   void init() override {
     depthProgram =
         &loadProgram({{GL_VERTEX_SHADER, "depth_cube.vert"}, {GL_FRAGMENT_SHADER, "depth_cube.frag"}});
+    layeredProgram = &loadProgram({{GL_VERTEX_SHADER, "depth_layered.vert"},
+                                   {GL_GEOMETRY_SHADER, "exercise_layered.geom"},
+                                   {GL_FRAGMENT_SHADER, "depth_cube.frag"}});
+    glslExercise("08.3", "exercise_layered.geom", "");  // (a geometry shader: its text is read)
     for (int f = 0; f < 2; ++f)  // one variant per filter: CUBE_FILTER is the cube.filter index
       scenePrograms[f] = &loadProgram({{GL_VERTEX_SHADER, "wb/scene.vert"}, {GL_FRAGMENT_SHADER, "scene.frag"}},
                                       "#define CUBE_FILTER " + std::to_string(f) + "\n");
@@ -57,13 +64,10 @@ class CubeLab : public wb::Lab {
     const Drawn now{light.position, nearFar, cube.size(), depthProgram->id(), alphaCutoff(), faces};
     if (ready && (!cache || !(now == drawn))) {
       auto timer = timePass("shadow");
-      depthProgram->set("u_lightPos", light.position);
-      depthProgram->set("u_far", nearFar.y);
-      renderShadowMap(*depthProgram, cube, light, faces, true);
+      fillCube(light, nearFar.y);
       drawn = now;
-    } else if (ready) {
-      showLight(cube.describe(light, faces, true));
     }
+    if (ready) showLight(cube.describe(light, faces, true));
 
     // PASS 2: the camera's view; the lookup needs only the direction from the light.
     auto timer = timePass("lighting");
@@ -79,6 +83,28 @@ class CubeLab : public wb::Lab {
   }
 
  private:
+  // The six faces in six passes, or in one through the geometry shader of 08.3 (while 08.3 is a stub,
+  // six passes, with a note).
+  void fillCube(const wb::Light& light, float far) {
+    const bool layered = method == 1 &&
+                         state("08.3") == wb::ExerciseState::Implemented && layeredProgram->ok();
+    if (method == 1 && !layered) warn("cube.method=geometry needs 08.3 (exercise_layered.geom): six passes for now");
+    wb::Program& p = layered ? *layeredProgram : *depthProgram;
+    p.set("u_lightPos", light.position);
+    p.set("u_far", far);
+    if (!layered) return renderShadowMap(p, cube, light, faces, true);
+    cube.beginLayered();
+    p.set("u_alphaCutoff", alphaCutoff());
+    for (int k = 0; k < 6; ++k) p.set(("u_faceViewProj[" + std::to_string(k) + "]").c_str(), faces[size_t(k)]);
+    gpuScene->draw(p);
+  }
+
+  wb::ExerciseState state(const std::string& id) const {
+    for (const auto& e : board().exercises())
+      if (e.id == id) return e.state;
+    return wb::ExerciseState::Unknown;
+  }
+
   // The light: the chosen one if it is a point light, else the scene's first point light.
   wb::Light pointLight() {
     const wb::Light& chosen = scene.lights[size_t(lightIndex)];
@@ -117,11 +143,13 @@ class CubeLab : public wb::Lab {
     }
   };
   Drawn drawn;
-  wb::Program* depthProgram = nullptr;   // PASS 1
+  wb::Program* depthProgram = nullptr;   // PASS 1, one face at a time
+  wb::Program* layeredProgram = nullptr;  // PASS 1, all six faces at once (08.3)
   wb::Program* scenePrograms[2] = {};    // PASS 2, one per cube.filter
   wb::CubeShadowMap cube;
   std::vector<glm::mat4> faces = std::vector<glm::mat4>(6, glm::mat4(1));
   int cache = 1;          // on: a static lantern's cube is drawn once
+  int method = 0;         // six passes
   int filter = 0;         // hard: 16 cube lookups a pixel (pcf) cost a CPU renderer 35 ms more
   int samples = 0;        // 16 offsets
   float radius = 0.04f;   // world units

@@ -177,6 +177,11 @@ TEST(Lab08, Ex08_1_SceneRoom) {
 TEST(Lab08, Ex08_2_SceneRoom) {
   wb::test::expectSceneMatchesGolden("08.2", "room_hard", wb::test::labArgs({"cube.filter=hard"}), kTol, kMaxFraction);
 }
+// The geometry shader fills the same cube as six passes: held to the same golden data.
+TEST(Lab08, Ex08_3_SceneGeometryShaderFillsTheSameCube) {
+  wb::test::expectSceneMatchesGolden("08.3", "room_hard", wb::test::labArgs({"cube.filter=hard", "cube.method=geometry"}),
+                                     kTol, kMaxFraction);
+}
 TEST(Lab08, Ex08_4_SceneRoom) {
   wb::test::expectSceneMatchesGolden("08.4", "room_hard", wb::test::labArgs({"cube.filter=hard"}), kTol, kMaxFraction);
 }
