@@ -141,7 +141,7 @@ function(_wb_add_mutant lab nn mutant_file)
   # A mistake in a shader needs no build of its own: the solution's tests grade the mutant's shaders
   # as the grader's judge grades a submission's (WB_SUBMISSION_DIR). A C++ mistake is compiled in.
   set(runner lab${nn}_solution_tests)
-  set(environment WB_SUBMISSION_DIR=${mutant_dir})
+  set(environment WB_SUBMISSION_DIR=${mutant_dir} WB_TEST_OUTPUT_DIR=${CMAKE_BINARY_DIR}/test-output/lab${nn}_mutant_${name})
   if(NOT file MATCHES "^shaders/")
     _wb_lab_variant(${lab} ${nn} "mutant" "_mutant_${name}" ${mutant_dir})
     set(runner lab${nn}_mutant_${name}_tests)

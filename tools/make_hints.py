@@ -41,7 +41,8 @@ def mutant_command(build, mutant):
     lab = mutant.parent.name
     fields, _ = fields_of(mutant)
     if fields.get("file", "").startswith("shaders/"):
-        env = dict(os.environ, WB_SUBMISSION_DIR=str(build / "mutants" / lab / mutant.stem))
+        env = dict(os.environ, WB_SUBMISSION_DIR=str(build / "mutants" / lab / mutant.stem),
+                   WB_TEST_OUTPUT_DIR=str(build / "test-output" / f"lab{lab[:2]}_mutant_{mutant.stem}"))
         return build / f"lab{lab[:2]}_solution_tests", env
     return build / f"lab{lab[:2]}_mutant_{mutant.stem}_tests", None
 

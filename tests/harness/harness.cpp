@@ -18,6 +18,14 @@
 namespace fs = std::filesystem;
 
 namespace wb::test {
+
+// Where this binary's tests write: its own folder, or WB_TEST_OUTPUT_DIR when a shader mutant borrows
+// the solution's binary (cmake/Lab.cmake), so that the two never write the same files at once.
+static fs::path outputDir() {
+  const char* dir = std::getenv("WB_TEST_OUTPUT_DIR");
+  return dir && *dir ? fs::path(dir) : fs::path(variant::kOutputDir);
+}
+
 namespace {
 std::unique_ptr<Context> g_context;
 std::string g_renderer;
@@ -305,13 +313,13 @@ int recordRequestedRuns(const fs::path& requests) {
 std::string runLabOutput(const std::string& id, const std::string& name, const std::vector<std::string>& args,
                          std::string& failure) {
   std::string log;
-  const auto ok = runIsolated(id, fs::path(variant::kOutputDir) / ("Ex" + id + "_" + name), args, log);
+  const auto ok = runIsolated(id, outputDir() / ("Ex" + id + "_" + name), args, log);
   failure = ok ? "" : ok.message();
   return log;
 }
 
 SceneMetrics measureScene(const std::string& id, const std::string& name, const std::vector<std::string>& args) {
-  const fs::path out = fs::path(variant::kOutputDir) / ("Ex" + id + "_" + name);
+  const fs::path out = outputDir() / ("Ex" + id + "_" + name);
   std::vector<std::string> scene = {"--size", "480x270", "--metrics"};
   scene.insert(scene.end(), args.begin(), args.end());
   std::string log;
@@ -334,7 +342,7 @@ SceneMetrics measureScene(const std::string& id, const std::string& name, const 
 
 void expectSceneMatchesGolden(const std::string& id, const std::string& name, const std::vector<std::string>& args,
                               float tolerance, double maxFailingFraction) {
-  const fs::path out = fs::path(variant::kOutputDir) / ("Ex" + id + "_" + name);
+  const fs::path out = outputDir() / ("Ex" + id + "_" + name);
   const fs::path golden = dataFile(name + ".pfm", fs::path("tests/golden") / variant::kLab, "golden");
   const fs::path pfm = out / "result.pfm";
   std::vector<std::string> all = {"--size", "256x256", "--dump-visibility", pfm.string()};
