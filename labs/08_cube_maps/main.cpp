@@ -1,7 +1,8 @@
 // Lab 08: point lights and cube shadow maps
 // ---------------------------------------------------------------------------------------------
 // Difficulty: 3/5. Handout: README.md beside this file.
-// Exercises:  08.1 in exercise.cpp; 08.2, 08.4 and 08.5 in shaders/exercise.glsl.
+// Exercises:  08.1 in exercise.cpp; 08.2, 08.4 and 08.5 in shaders/exercise.glsl; 08.3 in
+//             shaders/exercise_layered.geom.
 // Controls:   drag to orbit, wheel to zoom, 1-9 camera bookmarks, F12 screenshot.
 // A point light shines every way, so one perspective map cannot hold its shadows: six can, one per
 // face of a cube around the light. Each face is a 90° square frustum with its own up vector; the
@@ -21,9 +22,10 @@ class CubeLab : public wb::Lab {
     settings.addChoice("cube.filter", filter, {"hard", "pcf"}, "hard: one lookup (08.4); pcf: 3D offsets (08.5)");
     settings.addChoice("cube.pcf_samples", samples, {"16", "32", "64"}, "pcf: offsets per pixel");
     settings.add("cube.pcf_radius", radius, 0.005f, 0.2f, "pcf: the offsets' length in world units");
-    settings.addChoice("cube.method", method, {"six_passes", "geometry"},
+    settings.addChoice("cube.method", method, {"six_passes", "geometry", "instanced"},
                        "six_passes: the scene drawn once per face; geometry: once, a geometry shader (08.3) "
-                       "sends each triangle to all six faces");
+                       "sends each triangle to all six faces; instanced: six instances, the vertex shader "
+                       "picks the face (needs GL_ARB_shader_viewport_layer_array)");
     settings.addChoice("cube.cache", cache, {"off", "on"},
                        "on: draw the six faces only when the light, the map or its shader changes (the lantern "
                        "is static); off: every frame, to time the fill");
@@ -40,6 +42,8 @@ class CubeLab : public wb::Lab {
                                    {GL_GEOMETRY_SHADER, "exercise_layered.geom"},
                                    {GL_FRAGMENT_SHADER, "depth_cube.frag"}});
     glslExercise("08.3", "exercise_layered.geom", "");  // (a geometry shader: its text is read)
+    if (wb::hasGlExtension("GL_ARB_shader_viewport_layer_array"))
+      instancedProgram = &loadProgram({{GL_VERTEX_SHADER, "depth_instanced.vert"}, {GL_FRAGMENT_SHADER, "depth_cube.frag"}});
     for (int f = 0; f < 2; ++f)  // one variant per filter: CUBE_FILTER is the cube.filter index
       scenePrograms[f] = &loadProgram({{GL_VERTEX_SHADER, "wb/scene.vert"}, {GL_FRAGMENT_SHADER, "scene.frag"}},
                                       "#define CUBE_FILTER " + std::to_string(f) + "\n");
@@ -83,20 +87,25 @@ class CubeLab : public wb::Lab {
   }
 
  private:
-  // The six faces in six passes, or in one through the geometry shader of 08.3 (while 08.3 is a stub,
-  // six passes, with a note).
+  // The six faces in six passes, in one through the geometry shader of 08.3, or in one instanced
+  // pass; six passes, with a note, when the chosen way cannot run here.
   void fillCube(const wb::Light& light, float far) {
-    const bool layered = method == 1 &&
-                         state("08.3") == wb::ExerciseState::Implemented && layeredProgram->ok();
-    if (method == 1 && !layered) warn("cube.method=geometry needs 08.3 (exercise_layered.geom): six passes for now");
-    wb::Program& p = layered ? *layeredProgram : *depthProgram;
-    p.set("u_lightPos", light.position);
-    p.set("u_far", far);
-    if (!layered) return renderShadowMap(p, cube, light, faces, true);
+    wb::Program* p = method == 1 ? layeredProgram : method == 2 ? instancedProgram : depthProgram;
+    if (method == 1 && (state("08.3") != wb::ExerciseState::Implemented || !p->ok())) {
+      warn("cube.method=geometry needs 08.3 (exercise_layered.geom): six passes for now");
+      p = depthProgram;
+    }
+    if (method == 2 && !p) {
+      warn("cube.method=instanced needs GL_ARB_shader_viewport_layer_array, which this driver lacks: six passes");
+      p = depthProgram;
+    }
+    p->set("u_lightPos", light.position);
+    p->set("u_far", far);
+    if (p == depthProgram) return renderShadowMap(*p, cube, light, faces, true);
     cube.beginLayered();
-    p.set("u_alphaCutoff", alphaCutoff());
-    for (int k = 0; k < 6; ++k) p.set(("u_faceViewProj[" + std::to_string(k) + "]").c_str(), faces[size_t(k)]);
-    gpuScene->draw(p);
+    p->set("u_alphaCutoff", alphaCutoff());
+    for (int k = 0; k < 6; ++k) p->set(("u_faceViewProj[" + std::to_string(k) + "]").c_str(), faces[size_t(k)]);
+    gpuScene->draw(*p, wb::GpuScene::kAlbedoUnit, p == instancedProgram ? 6 : 1);
   }
 
   wb::ExerciseState state(const std::string& id) const {
@@ -145,6 +154,7 @@ class CubeLab : public wb::Lab {
   Drawn drawn;
   wb::Program* depthProgram = nullptr;   // PASS 1, one face at a time
   wb::Program* layeredProgram = nullptr;  // PASS 1, all six faces at once (08.3)
+  wb::Program* instancedProgram = nullptr;  // PASS 1, six instances (null without the extension)
   wb::Program* scenePrograms[2] = {};    // PASS 2, one per cube.filter
   wb::CubeShadowMap cube;
   std::vector<glm::mat4> faces = std::vector<glm::mat4>(6, glm::mat4(1));

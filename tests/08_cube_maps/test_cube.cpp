@@ -4,12 +4,20 @@
 // GL's cube-map face selection on a synthetic 8x8 cube; layer 2: the lantern room against golden
 // visibility (./workbook golden 08).
 #include "common/gl.hpp"
+#include "common/scene.hpp"
+#include "common/shader.hpp"
+#include "common/shadow_map.hpp"
+#include "common/variant.hpp"
 #include "exercise.hpp"
 #include "tests/harness/harness.hpp"
+#include "tests/harness/tape.hpp"
 
 #include <array>
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <iomanip>
+#include <sstream>
 
 using wb::test::GlTest;
 
@@ -163,6 +171,85 @@ TEST_F(GlTest, Ex08_5_AveragesTestsInThreeDimensions) {
           << ") from the light, case " << k;
     }
   }
+}
+
+// --- 08.3: the three ways to fill the cube, texel for texel ----------------------------------------------------
+namespace {
+
+// The lantern room's cube (64 texels a face) filled one way; the texels of all six faces, in GL's order.
+std::vector<float> fillCube(const wb::GpuScene& scene, const wb::Program& program, int way, const glm::vec3& light) {
+  const float n = 0.05f, f = 12;
+  wb::CubeShadowMap cube;
+  cube.resize(64);
+  program.set("u_lightPos", light);
+  program.set("u_far", f);
+  program.set("u_alphaCutoff", 0.5f);
+  std::vector<glm::mat4> faces;
+  for (int k = 0; k < 6; ++k)  // built here from the hand-derived axes: 08.1 is not what is tested
+    faces.push_back(glm::perspective(glm::radians(90.0f), 1.0f, n, f) * glm::lookAt(light, light + kAxis[k], kUp[k]));
+  for (int k = 0; k < 6; ++k) program.set(("u_faceViewProj[" + std::to_string(k) + "]").c_str(), faces[size_t(k)]);
+  if (way == 0) {
+    for (int k = 0; k < 6; ++k) {
+      cube.begin(k);
+      program.set("u_lightViewProj", faces[size_t(k)]);
+      scene.draw(program);
+    }
+  } else {
+    cube.beginLayered();
+    scene.draw(program, wb::GpuScene::kAlbedoUnit, way == 2 ? 6 : 1);
+  }
+  std::vector<float> texels(6 * 64 * 64);
+  glGetTextureImage(cube.texture(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(texels.size() * sizeof(float)), texels.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return texels;
+}
+
+// "" when `got` matches `want` on every face, else which faces differ and on what share of their texels.
+std::string facesThatDiffer(const std::vector<float>& want, const std::vector<float>& got) {
+  std::ostringstream out;
+  for (int k = 0; k < 6; ++k) {
+    int differ = 0;
+    for (size_t t = size_t(k) * 4096; t < size_t(k + 1) * 4096; ++t) differ += std::abs(want[t] - got[t]) > 1e-6f;
+    if (differ) out << " face " << k << " (" << kFace[k] << "): " << std::setprecision(3) << differ * 100.0 / 4096 << "%;";
+  }
+  return out.str();
+}
+
+}  // namespace
+
+// The same cube texel for texel, whichever way it is filled: six passes, the geometry shader of 08.3,
+// and (where the driver has GL_ARB_shader_viewport_layer_array) six instances.
+TEST_F(GlTest, Ex08_3_ThreeFillMethodsWriteTheSameCube) {
+  if (wb::test::tapeMode() == wb::test::TapeMode::Record) return;  // GLSL is the judge's to run
+  const wb::test::IsolatedShaders shaders("08.3");
+  if (shaders.text("exercise_layered.geom").find("WB_TODO") != std::string::npos)
+    FAIL() << "NOT IMPLEMENTED: shaders/exercise_layered.geom still holds WB_TODO";
+  const wb::Scene room = wb::Scene::load(std::string(wb::variant::kSourceDir) + "/scenes/cube_lantern.json");
+  const wb::GpuScene scene(room);
+  const glm::vec3 light = room.lights.at(0).position;
+  std::vector<std::vector<float>> cubes;
+  try {
+    const wb::Program six({{GL_VERTEX_SHADER, "depth_cube.vert"}, {GL_FRAGMENT_SHADER, "depth_cube.frag"}});
+    const wb::Program geometry({{GL_VERTEX_SHADER, "depth_layered.vert"},
+                                {GL_GEOMETRY_SHADER, "exercise_layered.geom"},
+                                {GL_FRAGMENT_SHADER, "depth_cube.frag"}});
+    cubes.push_back(fillCube(scene, six, 0, light));
+    cubes.push_back(fillCube(scene, geometry, 1, light));
+    if (wb::hasGlExtension("GL_ARB_shader_viewport_layer_array")) {
+      const wb::Program instanced({{GL_VERTEX_SHADER, "depth_instanced.vert"}, {GL_FRAGMENT_SHADER, "depth_cube.frag"}});
+      cubes.push_back(fillCube(scene, instanced, 2, light));
+    }
+  } catch (const std::exception& e) {
+    FAIL() << "ERROR: " << e.what();
+  }
+  size_t written = 0;
+  for (float t : cubes[0]) written += t < 1;
+  ASSERT_GT(written, cubes[0].size() / 2) << "ERROR: six passes left most of the cube empty (the test's own setup)";
+  const std::string geometry = facesThatDiffer(cubes[0], cubes[1]);
+  EXPECT_TRUE(geometry.empty()) << "WRONG: the geometry shader's cube differs from six passes' on" << geometry
+                                << " (is gl_Layer set to the face, and gl_Position through that face's matrix?)";
+  const std::string instanced = cubes.size() > 2 ? facesThatDiffer(cubes[0], cubes[2]) : "";
+  EXPECT_TRUE(instanced.empty()) << "ERROR: the instanced fill (the lab's own shader) differs on" << instanced;
 }
 
 // --- Layer 2 ------------------------------------------------------------------------------------------------

@@ -150,6 +150,22 @@ static std::vector<std::string> joined(std::vector<std::string> a, const std::ve
 // The app a judge trusts: the solution's (this build's in the student edition, which has none).
 static std::string trustedExe() { return variant::kSolutionExe[0] ? variant::kSolutionExe : variant::kLabExe; }
 
+IsolatedShaders::IsolatedShaders(const std::string& id) : dir_(outputDir() / ("isolated_" + id)) {
+  fs::create_directories(dir_);
+  for (const std::string& file : glslExerciseFiles()) std::ofstream(dir_ / file) << isolatedExerciseSource(file, id);
+  if (const char* old = std::getenv("WB_SHADER_OVERLAY")) previous_ = old, hadPrevious_ = true;
+  setenv("WB_SHADER_OVERLAY", dir_.c_str(), 1);
+}
+
+IsolatedShaders::~IsolatedShaders() {
+  if (hadPrevious_)
+    setenv("WB_SHADER_OVERLAY", previous_.c_str(), 1);
+  else
+    unsetenv("WB_SHADER_OVERLAY");
+}
+
+std::string IsolatedShaders::text(const std::string& file) const { return readFile(dir_ / file); }
+
 // The environment that makes an app use `id`'s isolated GLSL (the submission's chunk of a GLSL
 // exercise and the solution's other chunks; all solution for a C++ exercise), written into `out`.
 static std::string isolatedGlsl(const std::string& id, const fs::path& out) {

@@ -38,6 +38,25 @@ bool updatingGolden();
 std::vector<glm::vec4> runExercise(const std::string& id, const std::string& body, int count, int stride,
                                    const std::vector<glm::vec4>& inputs, const std::vector<unsigned>& textures = {});
 
+/// While it lives, this process's shaders (wb::Program, wb::shaderSearchPath) are exercise `id`'s
+/// isolated GLSL: the submission's chunk of `id` and the solution's other chunks, in every GLSL
+/// exercise file (exercise.glsl and stage files such as a .geom), written under the test outputs.
+/// For tests that build the lab's own programs in the test process. `text(file)` is what was written.
+class IsolatedShaders {
+ public:
+  explicit IsolatedShaders(const std::string& id);
+  ~IsolatedShaders();
+  IsolatedShaders(const IsolatedShaders&) = delete;
+  IsolatedShaders& operator=(const IsolatedShaders&) = delete;
+  /// The isolated text of GLSL exercise file `file` (e.g. "exercise_layered.geom").
+  std::string text(const std::string& file) const;
+
+ private:
+  std::filesystem::path dir_;
+  std::string previous_;
+  bool hadPrevious_ = false;
+};
+
 /// Runs a C++ exercise call; a wb::NotImplemented becomes a "NOT IMPLEMENTED" failure.
 #define WB_TRY_EXERCISE(statement)                       \
   try {                                                  \
