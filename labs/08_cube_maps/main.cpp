@@ -30,20 +30,20 @@ class CubeLab : public wb::Lab {
                        "on: draw the six faces only when the light, the map or its shader changes (the lantern "
                        "is static); off: every frame, to time the fill");
     settings.assign("shadow.map_size=512");  // per face: six of them
-    useDepthBias(0.03f);                      // in world units: the map stores distances
+    useDepthBias(0.03f);                     // in world units: the map stores distances
     useLightFaces();
   }
 
  protected:
   void init() override {
-    depthProgram =
-        &loadProgram({{GL_VERTEX_SHADER, "depth_cube.vert"}, {GL_FRAGMENT_SHADER, "depth_cube.frag"}});
+    depthProgram = &loadProgram({{GL_VERTEX_SHADER, "depth_cube.vert"}, {GL_FRAGMENT_SHADER, "depth_cube.frag"}});
     layeredProgram = &loadProgram({{GL_VERTEX_SHADER, "depth_layered.vert"},
                                    {GL_GEOMETRY_SHADER, "exercise_layered.geom"},
                                    {GL_FRAGMENT_SHADER, "depth_cube.frag"}});
     glslExercise("08.3", "exercise_layered.geom", "");  // (a geometry shader: its text is read)
     if (wb::hasGlExtension("GL_ARB_shader_viewport_layer_array"))
-      instancedProgram = &loadProgram({{GL_VERTEX_SHADER, "depth_instanced.vert"}, {GL_FRAGMENT_SHADER, "depth_cube.frag"}});
+      instancedProgram =
+          &loadProgram({{GL_VERTEX_SHADER, "depth_instanced.vert"}, {GL_FRAGMENT_SHADER, "depth_cube.frag"}});
     for (int f = 0; f < 2; ++f)  // one variant per filter: CUBE_FILTER is the cube.filter index
       scenePrograms[f] = &loadProgram({{GL_VERTEX_SHADER, "wb/scene.vert"}, {GL_FRAGMENT_SHADER, "scene.frag"}},
                                       "#define CUBE_FILTER " + std::to_string(f) + "\n");
@@ -58,9 +58,9 @@ class CubeLab : public wb::Lab {
     const glm::vec2 nearFar = nearFarFromBounds(light.position);
     bool ready = true;
     for (int k = 0; k < 6; ++k)
-      ready = attempt("08.1", faces[size_t(k)], [&] {
-                return lab08::cubeFaceViewProj(k, light.position, nearFar.x, nearFar.y);
-              }) && ready;
+      ready = attempt("08.1", faces[size_t(k)],
+                      [&] { return lab08::cubeFaceViewProj(k, light.position, nearFar.x, nearFar.y); }) &&
+              ready;
     cube.resize(shadowMapSize());
 
     // PASS 1: six faces, each through its own matrix, storing |p - light| / far; kept while nothing
@@ -71,7 +71,7 @@ class CubeLab : public wb::Lab {
       fillCube(light, nearFar.y);
       drawn = now;
     }
-    if (ready) showLight(cube.describe(light, faces, true));
+    if (ready) showLight(described(light));
 
     // PASS 2: the camera's view; the lookup needs only the direction from the light.
     auto timer = timePass("lighting");
@@ -106,6 +106,20 @@ class CubeLab : public wb::Lab {
     p->set("u_alphaCutoff", alphaCutoff());
     for (int k = 0; k < 6; ++k) p->set(("u_faceViewProj[" + std::to_string(k) + "]").c_str(), faces[size_t(k)]);
     gpuScene->draw(*p, wb::GpuScene::kAlbedoUnit, p == instancedProgram ? 6 : 1);
+  }
+
+  // The cube as the debug views and measurements see it, with the lookups PASS 2 makes (the same
+  // Fibonacci directions as cubeOffsetDir in cube_common.glsl), so they can be repeated with rays.
+  wb::LightView described(const wb::Light& light) const {
+    wb::LightView v = cube.describe(light, faces, true);
+    v.cubeBias = depthBias();
+    const int n = 16 << samples;
+    for (int k = 0; filter == 1 && k < n; ++k) {
+      const float y = 1 - 2 * (float(k) + 0.5f) / float(n), r = std::sqrt(std::max(0.0f, 1 - y * y)),
+                  phi = 2.39996323f * float(k);
+      v.cubeOffsets.push_back(radius * glm::vec3(r * std::cos(phi), y, r * std::sin(phi)));
+    }
+    return v;
   }
 
   wb::ExerciseState state(const std::string& id) const {
@@ -152,17 +166,17 @@ class CubeLab : public wb::Lab {
     }
   };
   Drawn drawn;
-  wb::Program* depthProgram = nullptr;   // PASS 1, one face at a time
-  wb::Program* layeredProgram = nullptr;  // PASS 1, all six faces at once (08.3)
+  wb::Program* depthProgram = nullptr;      // PASS 1, one face at a time
+  wb::Program* layeredProgram = nullptr;    // PASS 1, all six faces at once (08.3)
   wb::Program* instancedProgram = nullptr;  // PASS 1, six instances (null without the extension)
-  wb::Program* scenePrograms[2] = {};    // PASS 2, one per cube.filter
+  wb::Program* scenePrograms[2] = {};       // PASS 2, one per cube.filter
   wb::CubeShadowMap cube;
   std::vector<glm::mat4> faces = std::vector<glm::mat4>(6, glm::mat4(1));
-  int cache = 1;          // on: a static lantern's cube is drawn once
-  int method = 0;         // six passes
-  int filter = 0;         // hard: 16 cube lookups a pixel (pcf) cost a CPU renderer 35 ms more
-  int samples = 0;        // 16 offsets
-  float radius = 0.04f;   // world units
+  int cache = 1;         // on: a static lantern's cube is drawn once
+  int method = 0;        // six passes
+  int filter = 0;        // hard: 16 cube lookups a pixel (pcf) cost a CPU renderer 35 ms more
+  int samples = 0;       // 16 offsets
+  float radius = 0.04f;  // world units
 };
 
 }  // namespace

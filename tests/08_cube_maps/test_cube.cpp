@@ -63,7 +63,8 @@ TEST(Lab08, Ex08_1_EachFaceLooksAlongItsAxisWithGlsUp) {
 
 // --- 08.2: the distance write ---------------------------------------------------------------------------
 TEST_F(GlTest, Ex08_2_StoresDistanceOverFar) {
-  const std::vector<glm::vec4> in = {{1, 0, 0, 10}, {0, 3, 4, 10}, {-2, 2, 1, 6}, {0.1f, -0.2f, 0.2f, 1}, {5, 5, 5, 20}};
+  const std::vector<glm::vec4> in = {
+      {1, 0, 0, 10}, {0, 3, 4, 10}, {-2, 2, 1, 6}, {0.1f, -0.2f, 0.2f, 1}, {5, 5, 5, 20}};
   std::vector<glm::vec4> got;
   WB_RUN_GLSL(got, "08.2", "result.x = cubeDepth(IN(0).xyz + vec3(1.0, 2.0, 3.0), vec3(1.0, 2.0, 3.0), IN(0).w);",
               int(in.size()), 1, in);
@@ -121,9 +122,11 @@ std::vector<glm::vec4> directions() {
   std::vector<glm::vec4> in;
   for (int k = 0; k < 30; ++k) {
     const int f = k % 6;
-    const float s = (float(1 + (k * 3) % 6) + 0.33f) / kTexels * 2 - 1, t = (float(1 + (k * 5) % 6) + 0.33f) / kTexels * 2 - 1;
+    const float s = (float(1 + (k * 3) % 6) + 0.33f) / kTexels * 2 - 1,
+                t = (float(1 + (k * 5) % 6) + 0.33f) / kTexels * 2 - 1;
     glm::vec3 d = kAxis[f];  // then the face's two other axes, scaled by s and t
-    const glm::vec3 u = f < 2 ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0), v = f < 4 && f >= 2 ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+    const glm::vec3 u = f < 2 ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0),
+                    v = f < 4 && f >= 2 ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
     d += 0.8f * s * u + 0.8f * t * v;
     in.emplace_back(d, 0);
   }
@@ -145,8 +148,8 @@ TEST_F(GlTest, Ex08_4_LooksUpTheFaceOfTheDirectionAndCompares) {
     const glm::dvec3 d(in[k]);
     const double want = glm::length(d) - bias <= cube.at(d) * far ? 1 : 0;
     ASSERT_EQ(got[k].x, want) << std::setprecision(4) << "WRONG: a point (" << d.x << ", " << d.y << ", " << d.z
-                              << ") from the light, " << glm::length(d) << " away; the map stores "
-                              << cube.at(d) * far << " (far 10, bias 0.05) in that direction, case " << k;
+                              << ") from the light, " << glm::length(d) << " away; the map stores " << cube.at(d) * far
+                              << " (far 10, bias 0.05) in that direction, case " << k;
   }
 }
 
@@ -164,7 +167,8 @@ TEST_F(GlTest, Ex08_5_AveragesTestsInThreeDimensions) {
     for (size_t k = 0; k < in.size(); ++k) {
       const glm::dvec3 d(in[k]);
       double lit = 0;
-      for (int j = 0; j < 32; ++j) lit += glm::length(d) - 0.05 <= cube.at(d + glm::dvec3(sphere[size_t(j)]) * double(radius)) * 10;
+      for (int j = 0; j < 32; ++j)
+        lit += glm::length(d) - 0.05 <= cube.at(d + glm::dvec3(sphere[size_t(j)]) * double(radius)) * 10;
       // A tap within rounding of a texel edge may fall either way: one tap of slack.
       ASSERT_NEAR(got[k].x, lit / 32, 1.0 / 32 + 1e-5)
           << std::setprecision(4) << "WRONG: radius " << radius << ", a point (" << d.x << ", " << d.y << ", " << d.z
@@ -199,7 +203,8 @@ std::vector<float> fillCube(const wb::GpuScene& scene, const wb::Program& progra
     scene.draw(program, wb::GpuScene::kAlbedoUnit, way == 2 ? 6 : 1);
   }
   std::vector<float> texels(6 * 64 * 64);
-  glGetTextureImage(cube.texture(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(texels.size() * sizeof(float)), texels.data());
+  glGetTextureImage(cube.texture(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(texels.size() * sizeof(float)),
+                    texels.data());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return texels;
 }
@@ -210,7 +215,8 @@ std::string facesThatDiffer(const std::vector<float>& want, const std::vector<fl
   for (int k = 0; k < 6; ++k) {
     int differ = 0;
     for (size_t t = size_t(k) * 4096; t < size_t(k + 1) * 4096; ++t) differ += std::abs(want[t] - got[t]) > 1e-6f;
-    if (differ) out << " face " << k << " (" << kFace[k] << "): " << std::setprecision(3) << differ * 100.0 / 4096 << "%;";
+    if (differ)
+      out << " face " << k << " (" << kFace[k] << "): " << std::setprecision(3) << differ * 100.0 / 4096 << "%;";
   }
   return out.str();
 }
@@ -236,7 +242,8 @@ TEST_F(GlTest, Ex08_3_ThreeFillMethodsWriteTheSameCube) {
     cubes.push_back(fillCube(scene, six, 0, light));
     cubes.push_back(fillCube(scene, geometry, 1, light));
     if (wb::hasGlExtension("GL_ARB_shader_viewport_layer_array")) {
-      const wb::Program instanced({{GL_VERTEX_SHADER, "depth_instanced.vert"}, {GL_FRAGMENT_SHADER, "depth_cube.frag"}});
+      const wb::Program instanced(
+          {{GL_VERTEX_SHADER, "depth_instanced.vert"}, {GL_FRAGMENT_SHADER, "depth_cube.frag"}});
       cubes.push_back(fillCube(scene, instanced, 2, light));
     }
   } catch (const std::exception& e) {
@@ -266,12 +273,28 @@ TEST(Lab08, Ex08_2_SceneRoom) {
 }
 // The geometry shader fills the same cube as six passes: held to the same golden data.
 TEST(Lab08, Ex08_3_SceneGeometryShaderFillsTheSameCube) {
-  wb::test::expectSceneMatchesGolden("08.3", "room_hard", wb::test::labArgs({"cube.filter=hard", "cube.method=geometry"}),
-                                     kTol, kMaxFraction);
+  wb::test::expectSceneMatchesGolden(
+      "08.3", "room_hard", wb::test::labArgs({"cube.filter=hard", "cube.method=geometry"}), kTol, kMaxFraction);
 }
 TEST(Lab08, Ex08_4_SceneRoom) {
   wb::test::expectSceneMatchesGolden("08.4", "room_hard", wb::test::labArgs({"cube.filter=hard"}), kTol, kMaxFraction);
 }
 TEST(Lab08, Ex08_5_SceneRoom) {
   wb::test::expectSceneMatchesGolden("08.5", "room_pcf", wb::test::labArgs({"cube.filter=pcf"}), kTol, kMaxFraction);
+}
+
+// Measured: the 3D offsets cross a face's edge into the next face, so the seams are no worse than
+// the rest. Both are the frame against the same lookups made with rays instead of the map.
+TEST(Lab08, Ex08_5_MeasureSeamsNoWorseThanTheRest) {
+  const auto m = wb::test::measureScene("08.5", "measure_seams", wb::test::labArgs({"cube.filter=pcf"}));
+  if (!m.failure.empty()) FAIL() << m.failure;
+  ASSERT_GE(m.seamErrorPercent, 0) << "ERROR: the run measured no seams (is the light's map a cube?)";
+  EXPECT_LE(m.seamErrorPercent, 1.25 * m.restErrorPercent + 0.25)
+      << std::setprecision(3)
+      << "WRONG: within 2 degrees of a cube face's edge the shadow differs from the same lookups made with rays by "
+      << m.seamErrorPercent << "% on average, against " << m.restErrorPercent << "% elsewhere: do the offsets "
+      << "stay on one face (clamped at its edge) instead of crossing into the next?";
+  EXPECT_LT(m.restErrorPercent, 3) << std::setprecision(3)
+                                   << "WRONG: away from the seams the shadow differs from the same lookups made "
+                                   << "with rays by " << m.restErrorPercent << "% on average";
 }

@@ -355,6 +355,7 @@ SceneMetrics measureScene(const std::string& id, const std::string& name, const 
   }
   m.acnePercent = *run.acnePercent, m.leakPercent = *run.leakPercent, m.gapTexels = run.gapTexels.value_or(-1);
   m.areaMeanAbsPercent = run.areaMeanAbsPercent.value_or(-1), m.areaOffPercent = run.areaOffPercent.value_or(-1);
+  m.seamErrorPercent = run.seamErrorPercent.value_or(-1), m.restErrorPercent = run.restErrorPercent.value_or(-1);
   m.penumbra = run.penumbra;
   return m;
 }

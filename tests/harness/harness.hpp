@@ -95,11 +95,13 @@ std::string runLabOutput(const std::string& id, const std::string& name, const s
 /// Acne, leak and contact gap of one headless run (`--metrics`) of exercise `id`, isolated as in
 /// expectSceneMatchesGolden(); `failure` is set ("ERROR: …" or "NOT IMPLEMENTED: …") if it did not run.
 struct SceneMetrics {
-  double acnePercent = -1;                      ///< acne rate, in percent
-  double leakPercent = -1;                      ///< light leak, in percent
-  double gapTexels = -1;                        ///< contact gap in texels (-1 when not measured)
-  double areaMeanAbsPercent = -1;               ///< against the area light (-1 when the light has no size)
-  double areaOffPercent = -1;                   ///< the share off by more than 0.1 (-1 when not measured)
+  double acnePercent = -1;         ///< acne rate, in percent
+  double leakPercent = -1;         ///< light leak, in percent
+  double gapTexels = -1;           ///< contact gap in texels (-1 when not measured)
+  double areaMeanAbsPercent = -1;  ///< against the area light (-1 when the light has no size)
+  double areaOffPercent = -1;      ///< the share off by more than 0.1 (-1 when not measured)
+  double seamErrorPercent = -1;    ///< a cube map against its own lookups with rays, near face edges (-1: none)
+  double restErrorPercent = -1;    ///< the same, away from the face edges
   std::vector<std::array<double, 4>> penumbra;  ///< distance, theory, rendered, reference widths
   std::string failure;                          ///< empty when the run worked
 };
