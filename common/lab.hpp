@@ -132,8 +132,10 @@ class Lab {
   void showLight(const LightView& light) { light_ = light, lightShown_ = true; }
   /// The shadow map size chosen in the UI or by --set, clamped to GL_MAX_TEXTURE_SIZE.
   int shadowMapSize();
-  /// Registers the shadow.bias setting (a constant depth bias), for labs whose shaders use it.
-  void useDepthBias(float initial = 0.004f);
+  /// Registers the shadow.bias setting (a constant depth bias, from 0 to `max`), for labs whose
+  /// shaders use it; `help` says what unit it is in.
+  void useDepthBias(float initial = 0.004f, float max = 0.05f,
+                    const char* help = "constant depth bias subtracted from the receiver depth");
   /// Registers debug.light_face (which face or cascade the view from the light shows), for labs
   /// whose light has several matrices.
   void useLightFaces() { debug_.addLightFace(settings); }

@@ -30,7 +30,7 @@ class CubeLab : public wb::Lab {
                        "on: draw the six faces only when the light, the map or its shader changes (the lantern "
                        "is static); off: every frame, to time the fill");
     settings.assign("shadow.map_size=512");  // per face: six of them
-    useDepthBias(0.03f);                     // in world units: the map stores distances
+    useDepthBias(0.03f, 0.5f, "subtracted from the distance to the light, in world units (the map stores distances)");
     useLightFaces();
   }
 
