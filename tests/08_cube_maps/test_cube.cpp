@@ -285,7 +285,7 @@ TEST(Lab08, Ex08_5_SceneRoom) {
 
 // Measured: the 3D offsets cross a face's edge into the next face, so the seams are no worse than
 // the rest. Both are the frame against the same lookups made with rays instead of the map.
-TEST(Lab08, Ex08_5_MeasureSeamsNoWorseThanTheRest) {
+TEST(Lab08, Ex08_5_MeasuredSeamsNoWorseThanTheRest) {
   const auto m = wb::test::measureScene("08.5", "measure_seams", wb::test::labArgs({"cube.filter=pcf"}));
   if (!m.failure.empty()) FAIL() << m.failure;
   ASSERT_GE(m.seamErrorPercent, 0) << "ERROR: the run measured no seams (is the light's map a cube?)";
