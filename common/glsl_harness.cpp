@@ -133,7 +133,7 @@ std::vector<std::string> glslExerciseFiles() {
 
 fs::path submittedShaderFile(const std::string& file) {
   const char* dir = std::getenv("WB_SUBMISSION_DIR");
-  if (dir && *dir) return fs::path(dir) / "shaders" / file;
+  if (dir && *dir) return fs::absolute(fs::path(dir) / "shaders" / file);
   return findShaderFile(file, shaderSearchPath());
 }
 

@@ -23,7 +23,7 @@ namespace wb::test {
 // the solution's binary (cmake/Lab.cmake), so that the two never write the same files at once.
 static fs::path outputDir() {
   const char* dir = std::getenv("WB_TEST_OUTPUT_DIR");
-  return dir && *dir ? fs::path(dir) : fs::path(variant::kOutputDir);
+  return dir && *dir ? fs::absolute(dir) : fs::path(variant::kOutputDir);  // (the app runs elsewhere)
 }
 
 namespace {
