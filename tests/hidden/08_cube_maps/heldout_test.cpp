@@ -8,13 +8,9 @@ const std::vector<std::string> kHard = wb::test::labArgs({"cube.filter=hard"}, "
 const std::vector<std::string> kPcf = wb::test::labArgs({"cube.filter=pcf"}, "hidden/heldout.json");
 }  // namespace
 
-TEST(Hidden08, Ex08_1_SceneHeldOut) {
-  wb::test::expectSceneMatchesGolden("08.1", "hidden/heldout", kHard, 0.1f, 0.01);
-}
+TEST(Hidden08, Ex08_1_SceneHeldOut) { wb::test::expectSceneMatchesGolden("08.1", "hidden/heldout", kHard, 0.1f, 0.01); }
 
-TEST(Hidden08, Ex08_4_SceneHeldOut) {
-  wb::test::expectSceneMatchesGolden("08.4", "hidden/heldout", kHard, 0.1f, 0.01);
-}
+TEST(Hidden08, Ex08_4_SceneHeldOut) { wb::test::expectSceneMatchesGolden("08.4", "hidden/heldout", kHard, 0.1f, 0.01); }
 
 // The seams against the rest, as in the public test, in a room whose faces see very different
 // distances. The solution: 1.68% at the seams against 1.72% elsewhere (480x270).
