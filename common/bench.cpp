@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <vector>
 
 namespace wb {
@@ -24,27 +25,32 @@ void row(const std::vector<std::string>& cells, std::ofstream& csv) {
   csv << "\n";
 }
 
-std::vector<std::string> header(const Options& o, const std::vector<std::string>& passes) {
+// The table's columns; `seams` adds a cube map's seam and rest error.
+std::vector<std::string> header(const Options& o, const std::vector<std::string>& passes, bool seams) {
   std::vector<std::string> h;
   for (const auto& sw : o.sweeps) h.push_back(sw.first);
   if (o.metrics)
     h.insert(h.end(), {"acne_%", "leak_%", "contact_gap_texels", "shadow_light_%", "pcf_diff_%", "pcf_lighter_%",
                        "area_diff_%", "area_off_%"});
+  if (o.metrics && seams) h.insert(h.end(), {"seam_err_%", "rest_err_%"});
   for (const auto& p : passes) h.push_back(p + "_gpu_ms");
   h.emplace_back("frame_ms");
   return h;
 }
 
-std::vector<std::string> measuredCells(const MeasureResult& m) {
+std::vector<std::string> measuredCells(const MeasureResult& m, bool seams) {
   const bool ref = m.reference.pixels > 0, area = m.area.pixels > 0;
-  return {strf("%.2f", 100 * m.metrics.acneRate()),
-          strf("%.2f", 100 * m.metrics.leakRate()),
-          m.gapTexels < 0 ? "n/a" : strf("%.1f", m.gapTexels),
-          strf("%.2f", 100 * m.metrics.meanShadowLight()),
-          ref ? strf("%.2f", 100 * m.reference.meanAbs()) : "n/a",
-          ref ? strf("%.2f", 100 * m.reference.lighterRate()) : "n/a",
-          area ? strf("%.2f", 100 * m.area.meanAbs()) : "n/a",
-          area ? strf("%.2f", 100 * (m.area.lighterRate() + m.area.darkerRate())) : "n/a"};
+  std::vector<std::string> cells{strf("%.2f", 100 * m.metrics.acneRate()),
+                                 strf("%.2f", 100 * m.metrics.leakRate()),
+                                 m.gapTexels < 0 ? "n/a" : strf("%.1f", m.gapTexels),
+                                 strf("%.2f", 100 * m.metrics.meanShadowLight()),
+                                 ref ? strf("%.2f", 100 * m.reference.meanAbs()) : "n/a",
+                                 ref ? strf("%.2f", 100 * m.reference.lighterRate()) : "n/a",
+                                 area ? strf("%.2f", 100 * m.area.meanAbs()) : "n/a",
+                                 area ? strf("%.2f", 100 * (m.area.lighterRate() + m.area.darkerRate())) : "n/a"};
+  if (seams)
+    cells.insert(cells.end(), {strf("%.2f", 100 * m.seams.seam.meanAbs()), strf("%.2f", 100 * m.seams.rest.meanAbs())});
+  return cells;
 }
 
 }  // namespace
@@ -61,9 +67,10 @@ void writeBench(const std::string& path, const std::string& lab, glm::ivec2 size
     std::printf("  %-14s %10s %10s %10s\n", "pass", "mean ms", "min ms", "max ms");
   }
   for (const auto& [name, s] : timers.passes()) {
-    csv << "lab" << lab << ",\"" << renderer << "\"," << where << "," << name << "," << s.mean() << "," << s.min << ","
-        << s.max << "," << s.count << "\n";
-    if (print) std::printf("  %-14s %10.3f %10.3f %10.3f\n", name.c_str(), s.mean(), s.min, s.max);
+    csv << "lab" << lab << ",\"" << renderer << "\"," << where << "," << name << "," << s.mean() << ","
+        << (s.count ? s.min : 0) << "," << s.max << "," << s.count << "\n";
+    if (print && s.count == 0) std::printf("  %-14s %10s   (not drawn in the measured frames)\n", name.c_str(), "-");
+    if (print && s.count > 0) std::printf("  %-14s %10.3f %10.3f %10.3f\n", name.c_str(), s.mean(), s.min, s.max);
   }
   const double frameMs = wall.meanMs();
   csv << "lab" << lab << ",\"" << renderer << "\"," << where << ",frame_wall," << frameMs << ",,," << wall.frames
@@ -84,6 +91,7 @@ int runSweep(const Options& o, Settings& settings, GpuTimers& timers, const std:
   size_t total = 1;
   for (const auto& sw : o.sweeps) total *= sw.second.size();
   std::vector<std::string> passNames;
+  bool seams = false;
   for (size_t n = 0; n < total; ++n) {
     std::vector<std::string> cells;
     size_t k = n;
@@ -97,6 +105,9 @@ int runSweep(const Options& o, Settings& settings, GpuTimers& timers, const std:
     frame();  // warm-up: allocations, first use of a program
     timers.collect(true, false);
     timers.resetStats();
+    // Where timing passes slows the frame (gpu_timers.hpp), the frame time comes from frames of its own.
+    const bool apart = timers.perturbs();
+    timers.enable(!apart);
     const auto t0 = std::chrono::steady_clock::now();
     for (int f = 0; f < timed; ++f) {
       frame();
@@ -104,16 +115,24 @@ int runSweep(const Options& o, Settings& settings, GpuTimers& timers, const std:
     }
     const double wall =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / timed;
-    if (n == 0) {  // the header, once the passes are known
+    timers.enable(true);
+    for (int f = 0; apart && f < timed; ++f) {
+      frame();
+      timers.collect(true, true);
+    }
+    std::optional<MeasureResult> measured;
+    if (o.metrics) measured = measure();
+    if (n == 0) {  // the header, once the passes (and whether the light has a cube map) are known
       for (const auto& p : timers.passes()) passNames.push_back(p.first);
-      const auto h = header(o, passNames);
+      seams = measured && measured->seams.seam.pixels + measured->seams.rest.pixels > 0;
+      const auto h = header(o, passNames, seams);
       row(h, csv);
       std::string rule = "|";
       for (size_t c = 0; c < h.size(); ++c) rule += "---|";
       std::printf("%s\n", rule.c_str());
     }
-    if (o.metrics) {
-      const auto m = measuredCells(measure());
+    if (measured) {
+      const auto m = measuredCells(*measured, seams);
       cells.insert(cells.end(), m.begin(), m.end());
     }
     for (const auto& p : passNames) {

@@ -60,8 +60,19 @@ void ExerciseBoard::addProbe(const std::string& id, const std::string& file, con
 void ExerciseBoard::probe() {
   // One kernel per file: probe k writes result k, so a file costs one compile however many it has.
   std::map<std::string, std::vector<const Probe*>> byFile;
-  for (const auto& p : probes_) byFile[p.file].push_back(&p);
+  for (const auto& p : probes_) {
+    if (p.expression.empty()) {  // a stage a kernel cannot include (a geometry shader): read its text
+      probeText(p);
+      continue;
+    }
+    byFile[p.file].push_back(&p);
+  }
+  // Probes may read wb_tex0 (a 2D texture) and wb_tex1 (a cube map, for lab 08's lookups).
   Texture dummy = makeTexture2D(GL_R32F, 1, 1);
+  GLuint cubeId = 0;
+  glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &cubeId);
+  Texture cube(cubeId);
+  glTextureStorage2D(cube.id(), 1, GL_R32F, 1, 1);
   for (const auto& [file, probes] : byFile) {
     std::string body;
     for (size_t k = 0; k < probes.size(); ++k)
@@ -69,13 +80,29 @@ void ExerciseBoard::probe() {
     try {
       const fs::path path = findShaderFile(file, shaderSearchPath());
       probedFiles_[path] = fs::last_write_time(path);
-      auto r = runGlslKernel(readFile(path), path, body, int(probes.size()), 1, {}, {dummy.id()});
+      auto r = runGlslKernel(readFile(path), path, body, int(probes.size()), 1, {}, {dummy.id(), cube.id()});
       for (size_t k = 0; k < probes.size(); ++k)
         set(probes[k]->id, isTodo(r[k].x) ? ExerciseState::NotImplemented : ExerciseState::Implemented,
             isTodo(r[k].x) ? "the GLSL function still returns WB_TODO" : "");
     } catch (const Error& e) {
       for (const auto* p : probes) set(p->id, ExerciseState::Failed, e.what());
     }
+  }
+}
+
+void ExerciseBoard::probeText(const Probe& p) {
+  try {
+    const fs::path path = findShaderFile(p.file, shaderSearchPath());
+    probedFiles_[path] = fs::last_write_time(path);
+    const std::string text = readFile(path);
+    const size_t at = findMarker(text, p.id);
+    const size_t end = text.find("// EXERCISE ", at == std::string::npos ? 0 : at + 1);
+    const std::string chunk = at == std::string::npos ? text : text.substr(at, end - at);
+    const bool todo = chunk.find("WB_TODO") != std::string::npos;
+    set(p.id, todo ? ExerciseState::NotImplemented : ExerciseState::Implemented,
+        todo ? "the shader still holds WB_TODO" : "");
+  } catch (const Error& e) {
+    set(p.id, ExerciseState::Failed, e.what());
   }
 }
 

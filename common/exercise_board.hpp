@@ -48,7 +48,9 @@ class ExerciseBoard {
   void set(const std::string& id, ExerciseState state, const std::string& message);
 
   /// Registers the GLSL probe of exercise `id`: `expression` is evaluated in a compute shader that
-  /// includes `file` and compared with WB_TODO.
+  /// includes `file` and compared with WB_TODO. An empty expression (a stage a kernel cannot
+  /// include, such as a geometry shader) reads the exercise's text instead: it is not implemented
+  /// while it still holds the word WB_TODO.
   void addProbe(const std::string& id, const std::string& file, const std::string& expression);
   /// Runs every probe now (needs a GL context) and records the results.
   void probe();
@@ -64,6 +66,7 @@ class ExerciseBoard {
   struct Probe {
     std::string id, file, expression;
   };
+  void probeText(const Probe& p);
   std::string number_, title_;
   std::string lab_, pictureName_;  // "01_depth_map", "images/directional.png"
   std::filesystem::path picture_;

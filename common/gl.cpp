@@ -41,6 +41,16 @@ Buffer makeBuffer(size_t bytes, const void* data, GLbitfield flags) {
   return Buffer(id);
 }
 
+bool hasGlExtension(const char* name) {
+  GLint count = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+  for (GLint k = 0; k < count; ++k)
+    if (const auto* e = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(k)));
+        e && std::string(e) == name)
+      return true;
+  return false;
+}
+
 Framebuffer makeFramebuffer(std::initializer_list<GLuint> colors, GLuint depth) {
   GLuint id = 0;
   glCreateFramebuffers(1, &id);

@@ -74,5 +74,7 @@ Buffer makeBuffer(size_t bytes, const void* data, GLbitfield flags = GL_DYNAMIC_
 /// by the texture's format) attachment; throws
 /// wb::Error if it is incomplete.
 Framebuffer makeFramebuffer(std::initializer_list<GLuint> colors, GLuint depth);
+/// True when the current context lists extension `name` (e.g. "GL_ARB_shader_viewport_layer_array").
+bool hasGlExtension(const char* name);
 
 }  // namespace wb

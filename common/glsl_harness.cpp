@@ -100,19 +100,40 @@ std::string keepOnlyChunk(const std::string& mine, const std::string& solution, 
 
 }  // namespace
 
-bool isGlslExercise(const std::string& file, const std::string& id) {
+namespace {
+// The lab's manifest: exercises.json's "exercises" list (empty when it cannot be read).
+nlohmann::json manifestExercises() {
   try {
-    const auto manifest = nlohmann::json::parse(readFile(fs::path(variant::kLabDir) / "exercises.json"));
-    for (const auto& e : manifest.at("exercises"))
-      if (e.at("id").get<std::string>() == id) return e.at("file").get<std::string>() == "shaders/" + file;
+    return nlohmann::json::parse(readFile(fs::path(variant::kLabDir) / "exercises.json")).at("exercises");
   } catch (const std::exception&) {
+    return nlohmann::json::array();
   }
-  return false;
+}
+}  // namespace
+
+bool isGlslExercise(const std::string& file, const std::string& id) { return glslExerciseFile(id) == file; }
+
+std::string glslExerciseFile(const std::string& id) {
+  for (const auto& e : manifestExercises()) {
+    const std::string f = e.value("file", "");
+    if (e.value("id", "") == id && f.rfind("shaders/", 0) == 0) return f.substr(8);
+  }
+  return "";
+}
+
+std::vector<std::string> glslExerciseFiles() {
+  std::vector<std::string> files;
+  for (const auto& e : manifestExercises()) {
+    const std::string f = e.value("file", "");
+    if (f.rfind("shaders/", 0) == 0 && std::find(files.begin(), files.end(), f.substr(8)) == files.end())
+      files.push_back(f.substr(8));
+  }
+  return files;
 }
 
 fs::path submittedShaderFile(const std::string& file) {
   const char* dir = std::getenv("WB_SUBMISSION_DIR");
-  if (dir && *dir) return fs::path(dir) / "shaders" / file;
+  if (dir && *dir) return fs::absolute(fs::path(dir) / "shaders" / file);
   return findShaderFile(file, shaderSearchPath());
 }
 

@@ -30,6 +30,12 @@ size_t findMarker(const std::string& text, const std::string& id);
 std::filesystem::path submittedShaderFile(const std::string& file);
 /// True when the lab's manifest puts exercise `id` in shaders/`file`.
 bool isGlslExercise(const std::string& file, const std::string& id);
+/// The shader file (name under shaders/) that the manifest puts GLSL exercise `id` in, e.g.
+/// "exercise.glsl" or "exercise_layered.geom"; "" for a C++ exercise or an unknown id.
+std::string glslExerciseFile(const std::string& id);
+/// Every shader file (name under shaders/) that holds a GLSL exercise of this lab, each once, in
+/// the manifest's order.
+std::vector<std::string> glslExerciseFiles();
 
 /// The GLSL sampler types a kernel texture can be declared as.
 enum class SamplerType {

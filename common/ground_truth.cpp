@@ -65,6 +65,47 @@ ReferenceDifference compareWithReference(const FloatImage& rendered, const std::
   return d;
 }
 
+FloatImage filteredPointVisibility(const RayScene& rays, const glm::vec3& light, int width, int height,
+                                   const std::vector<glm::vec4>& positions, const std::vector<glm::vec3>& offsets,
+                                   float bias) {
+  const std::vector<glm::vec3> taps = offsets.empty() ? std::vector<glm::vec3>{glm::vec3(0)} : offsets;
+  FloatImage out{width, height, std::vector<float>(size_t(width) * size_t(height))};
+  forEachRow(height, [&](int y) {
+    for (int x = 0; x < width; ++x) {
+      const size_t i = size_t(y) * size_t(width) + size_t(x);
+      const glm::vec4 p = positions[i];
+      const glm::vec3 d = glm::vec3(p) - light;
+      int lit = 0;
+      for (const glm::vec3& o : taps)  // from the light outwards, as the map saw it
+        lit += p.w > 0 && !rays.occluded(light, glm::normalize(d + o), 1e-3f, glm::length(d) - bias);
+      out.pixels[i] = p.w == 0 ? std::numeric_limits<float>::quiet_NaN() : float(lit) / float(taps.size());
+    }
+  });
+  return out;
+}
+
+double degreesFromCubeSeam(const glm::vec3& d) {
+  glm::dvec3 a = glm::abs(glm::dvec3(d));
+  if (a.x < a.y) std::swap(a.x, a.y);
+  if (a.y < a.z) std::swap(a.y, a.z);
+  if (a.x < a.y) std::swap(a.x, a.y);  // now a.x >= a.y >= a.z
+  const double len = glm::length(a);
+  // The plane |d_major| = |d_second| has the normal (1, -1, 0) / sqrt(2) in these sorted components.
+  return len > 0 ? glm::degrees(std::asin(std::clamp((a.x - a.y) / (std::sqrt(2.0) * len), 0.0, 1.0))) : 0;
+}
+
+SeamError cubeSeamError(const FloatImage& rendered, const FloatImage& exact, const std::vector<glm::vec4>& positions,
+                        const glm::vec3& light, double degrees) {
+  SeamError e;
+  for (size_t i = 0; i < exact.pixels.size() && i < rendered.pixels.size(); ++i) {
+    if (std::isnan(exact.pixels[i]) || positions[i].w <= 0) continue;
+    ReferenceDifference& d = degreesFromCubeSeam(glm::vec3(positions[i]) - light) < degrees ? e.seam : e.rest;
+    const double diff = double(std::clamp(rendered.pixels[i], 0.0f, 1.0f)) - double(exact.pixels[i]);
+    ++d.pixels, d.absSum += std::abs(diff), d.lighter += diff > 0.1, d.darker += diff < -0.1;
+  }
+  return e;
+}
+
 double contactGapTexels(const FloatImage& rendered, const FloatImage& exact, const std::vector<glm::vec4>& positions,
                         const RayScene& rays, const Light& light, float groundY, float texelWorld) {
   constexpr size_t kBins = 64;                                             // half-texel bins up to 32 texels

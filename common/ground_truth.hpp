@@ -59,6 +59,28 @@ struct ReferenceDifference {
 ReferenceDifference compareWithReference(const FloatImage& rendered, const std::vector<float>& reference, int x0,
                                          int x1);
 
+/// A point light's frame split by where its cube map is read: the pixels whose direction from the
+/// light lies within `degrees` of a boundary between two faces (the seams), and the rest. Each half
+/// holds |rendered − exact| over its light-facing pixels (exact not NaN), as a ReferenceDifference.
+struct SeamError {
+  ReferenceDifference seam;  ///< within `degrees` of a face boundary
+  ReferenceDifference rest;  ///< everywhere else
+};
+/// The angle in degrees between direction `d` and the nearest boundary between two cube faces (the
+/// plane where its two largest |components| are equal): 0 on a seam, 45 at a face's centre.
+double degreesFromCubeSeam(const glm::vec3& d);
+/// The share of a point light's filtered lookups that see the light, with rays instead of a map:
+/// for each pixel (positions, w > 0 facing the light) and offset o, one test of whether the light
+/// reaches |d| − bias along d + o, where d = p − light; NaN for the background, 0 facing away.
+/// `offsets` empty: one test along d (hard shadows with a bias).
+FloatImage filteredPointVisibility(const RayScene& rays, const glm::vec3& light, int width, int height,
+                                   const std::vector<glm::vec4>& positions, const std::vector<glm::vec3>& offsets,
+                                   float bias);
+/// Splits the frame's difference from `exact` (for a cube map: filteredPointVisibility with the
+/// lab's own offsets and bias) into seams and the rest for a point light at `light`.
+SeamError cubeSeamError(const FloatImage& rendered, const FloatImage& exact, const std::vector<glm::vec4>& positions,
+                        const glm::vec3& light, double degrees);
+
 /// Peter-panning on the ground: the distance between a caster's contact line and where its shadow
 /// starts, in shadow-map texels, for the worst caster resting on the ground. Every ground pixel (y within 1e-3 of
 /// `groundY`) that is truly in a cast shadow is binned, per caster, by its horizontal distance to the

@@ -31,10 +31,9 @@ Lab::Lab(std::string defaultScene, ShadowKind kind)
 
 Lab::~Lab() = default;
 
-void Lab::useDepthBias(float initial) {
+void Lab::useDepthBias(float initial, float max, const char* help) {
   bias_ = initial;
-  if (!biasRegistered_)
-    settings.add("shadow.bias", bias_, 0.0f, 0.05f, "constant depth bias subtracted from the receiver depth");
+  if (!biasRegistered_) settings.add("shadow.bias", bias_, 0.0f, max, help);
   biasRegistered_ = true;
 }
 

@@ -70,7 +70,8 @@ class Lab {
   /// Builds a program that is hot-reloaded with the others; a broken edit keeps the last good one.
   Program& loadProgram(std::vector<ShaderStage> stages, std::string defines = {});
   /// Registers a GLSL exercise and the expression that probes whether it is implemented; the
-  /// expression is evaluated in a compute shader with `file` included and compared with WB_TODO.
+  /// expression is evaluated in a compute shader with `file` included and compared with WB_TODO; it
+  /// may read wb_tex0 (a 2D texture) and wb_tex1 (a cube map).
   void glslExercise(const std::string& id, const std::string& file, const std::string& probe) {
     board_.addProbe(id, file, probe);
   }
@@ -131,8 +132,10 @@ class Lab {
   void showLight(const LightView& light) { light_ = light, lightShown_ = true; }
   /// The shadow map size chosen in the UI or by --set, clamped to GL_MAX_TEXTURE_SIZE.
   int shadowMapSize();
-  /// Registers the shadow.bias setting (a constant depth bias), for labs whose shaders use it.
-  void useDepthBias(float initial = 0.004f);
+  /// Registers the shadow.bias setting (a constant depth bias, from 0 to `max`), for labs whose
+  /// shaders use it; `help` says what unit it is in.
+  void useDepthBias(float initial = 0.004f, float max = 0.05f,
+                    const char* help = "constant depth bias subtracted from the receiver depth");
   /// Registers debug.light_face (which face or cascade the view from the light shows), for labs
   /// whose light has several matrices.
   void useLightFaces() { debug_.addLightFace(settings); }

@@ -22,6 +22,11 @@ struct LightView {
   bool linearDistance = false;      ///< the map stores |p − light| / far instead of window depth
   int kernel = 1;                   ///< the prefilter's width (filtered maps): the footprint the PCF reference uses
   bool gaussian = false;            ///< the prefilter's weights: Gaussian, or a box
+  /// A cube map's lookups, so the measurement can evaluate the same filter with rays: the offsets
+  /// (world units) added to the direction p − light, one test each, averaged (empty: one lookup
+  /// along p − light), and the depth bias each test subtracts from |p − light|.
+  std::vector<glm::vec3> cubeOffsets;
+  float cubeBias = 0;  ///< see cubeOffsets
 
   /// True when a shadow map was rendered this frame.
   bool hasMap() const { return texture != 0 && !viewProj.empty(); }

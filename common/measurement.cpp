@@ -47,6 +47,11 @@ nlohmann::json MeasureResult::toJson() const {
     j["area_mean_abs_percent"] = 100 * area.meanAbs();
     j["area_off_percent"] = 100 * (area.lighterRate() + area.darkerRate());
   }
+  j["seam_error_percent"] = nullptr, j["rest_error_percent"] = nullptr, j["seam_pixels"] = nullptr;
+  if (seams.seam.pixels + seams.rest.pixels > 0) {
+    j["seam_error_percent"] = 100 * seams.seam.meanAbs(), j["rest_error_percent"] = 100 * seams.rest.meanAbs();
+    j["seam_pixels"] = seams.seam.pixels;
+  }
   j["penumbra"] = nlohmann::json::array();
   for (const auto& p : penumbra)
     j["penumbra"].push_back({{"x", p.x},
@@ -167,6 +172,18 @@ MeasureResult Measurement::measure(const MeasureInput& in) {
         100 * r.reference.meanAbs(), 100 * r.reference.lighterRate(), 100 * r.reference.darkerRate());
   }
   const std::string split = in.split.on ? halves(in, rendered, exact, positions) : "";
+  std::string seams;
+  if (in.light.target == GL_TEXTURE_CUBE_MAP) {
+    // The same lookups with rays: what differs is the map's doing, not the filter's.
+    const FloatImage same =
+        filteredPointVisibility(*rays_, light.position, w, h, positions, in.light.cubeOffsets, in.light.cubeBias);
+    r.seams = cubeSeamError(rendered, same, positions, light.position, kSeamDegrees);
+    seams = strf(
+        "\nagainst the same %zu lookup%s with rays: |difference| %.2f%% within %.0f degrees of a cube "
+        "face's edge (%ld pixels), %.2f%% elsewhere",
+        std::max<size_t>(1, in.light.cubeOffsets.size()), in.light.cubeOffsets.size() > 1 ? "s" : "",
+        100 * r.seams.seam.meanAbs(), kSeamDegrees, r.seams.seam.pixels, 100 * r.seams.rest.meanAbs());
+  }
   std::string area = areaText(in, light, rendered, exact, positions, r);
   if (!area.empty())
     area =
@@ -182,7 +199,7 @@ MeasureResult Measurement::measure(const MeasureInput& in) {
                100 * m.acneRate(), m.acnePixels, m.litPixels, 100 * m.leakRate(), m.leakPixels, m.shadowedPixels,
                r.gapTexels < 0 ? "n/a" : strf("%.1f texels", r.gapTexels).c_str(), 100 * m.meanShadowLight(),
                r.milliseconds) +
-           "\n" + pcfText + split + area;
+           "\n" + pcfText + seams + split + area;
   r.heatmap = artifactHeatmap(rendered, exact, positions);
   return r;
 }

@@ -26,6 +26,7 @@ struct MeasureResult {
   ReferenceDifference reference;       ///< against PCF (pixels = 0 when not defined)
   ReferenceDifference area;            ///< against the area-light reference (pixels = 0 for a point light)
   std::vector<PenumbraSlab> penumbra;  ///< the scene's penumbra probe, if it has one and the light a size
+  SeamError seams;                     ///< a cube map's seams against the rest (pixels = 0 for other maps)
   std::string notes;                   ///< why a measurement was skipped, if one was
   std::string text;                    ///< the whole result for people
   std::vector<uint8_t> heatmap;        ///< RGBA8: acne red, leaks blue (rows bottom to top)
@@ -33,7 +34,8 @@ struct MeasureResult {
   /// The numbers as JSON: acne_percent, leak_percent, shadow_light_percent, contact_gap_texels
   /// (null when not defined), pcf_diff_percent and pcf_lighter_percent (null when not defined),
   /// area_mean_abs_percent and area_off_percent (null for a point light; over the pixels where the
-  /// frame or the area-light reference is below 1), penumbra (rows).
+  /// frame or the area-light reference is below 1), penumbra (rows), seam_error_percent,
+  /// rest_error_percent and seam_pixels (null unless the light has a cube map).
   nlohmann::json toJson() const;
 };
 
@@ -48,6 +50,9 @@ struct MeasureInput {
   const LightView* sides;      ///< in split screen: the left and right halves' lights (two)
   int lightSamples;            ///< rays per pixel of the area-light reference
 };
+
+/// How close to a cube face's boundary a pixel's direction must be to count as on a seam.
+constexpr double kSeamDegrees = 2.0;
 
 /// Measures frames; keeps the ray-cast scene and the PCF reference between calls.
 class Measurement {

@@ -240,9 +240,9 @@ Mesh::Mesh(const MeshData& d) {
   }
 }
 
-void Mesh::draw() const {
+void Mesh::draw(int instances) const {
   glBindVertexArray(vao_.id());
-  glDrawElements(GL_TRIANGLES, count_, GL_UNSIGNED_INT, nullptr);
+  glDrawElementsInstanced(GL_TRIANGLES, count_, GL_UNSIGNED_INT, nullptr, instances);
 }
 
 void Mesh::uploadWelded(const MeshData& d) {

@@ -70,8 +70,8 @@ class Mesh {
   /// Uploads `data` (attributes 0 = position, 1 = normal, 2 = uv) and its welded positions and
   /// indices (welding a copy first if `data` is not welded).
   explicit Mesh(const MeshData& data);
-  /// Draws the whole mesh with the bound program.
-  void draw() const;
+  /// Draws the whole mesh with the bound program, `instances` times (gl_InstanceID 0, 1, ...).
+  void draw(int instances = 1) const;
 
   /// Replaces the index buffer that drawWelded() uses with `indices` into the welded positions,
   /// drawn as `mode`: e.g. six per triangle with GL_TRIANGLES_ADJACENCY. Throws wb::Error when an

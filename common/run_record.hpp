@@ -42,6 +42,8 @@ struct RunResult {
   std::optional<double> shadowLightPercent;             ///< measurement (with --metrics)
   std::optional<double> areaMeanAbsPercent;             ///< against the area light, when the light has a size
   std::optional<double> areaOffPercent;                 ///< the share of pixels off by more than 0.1, the same
+  std::optional<double> seamErrorPercent;               ///< a cube map's mean |error| near its face boundaries
+  std::optional<double> restErrorPercent;               ///< the same away from them
   /// The penumbra probe's slabs: receiver-blocker distance, theory, rendered and reference widths.
   std::vector<std::array<double, 4>> penumbra;
 };

@@ -257,7 +257,7 @@ GpuScene::GpuScene(const Scene& scene) {
   }
 }
 
-void GpuScene::draw(const Program& program, int unit) const {
+void GpuScene::draw(const Program& program, int unit, int instances) const {
   program.use();
   program.set("u_albedo", unit);
   for (const auto& it : items_) {
@@ -265,7 +265,7 @@ void GpuScene::draw(const Program& program, int unit) const {
     program.set("u_color", it.color);
     program.set("u_hasTexture", it.textured ? 1 : 0);
     glBindTextureUnit(unit, it.texture);
-    it.mesh.draw();
+    it.mesh.draw(instances);
   }
 }
 

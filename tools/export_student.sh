@@ -44,9 +44,9 @@ sys.stdout.write(text)' "$out/README.md.instructor" >"$out/README.md"
   echo "export-student: wrote $(cd "$out" && find . -type f | wc -l) files to $out (the committed tree, $(git rev-parse --short HEAD))"
 fi
 
-# A leak is three consecutive code lines of a solution file (blank lines and comments skipped) that
-# appear, in the same order, in an exported file, unless the lab's own stub folder has them too (the
-# signatures and includes the stubs share). /usr/bin/python3 is there: the build needs python3-glad.
+# A leak is three consecutive code lines of a solution file (blank lines and comments skipped), one
+# of them at least 24 characters long, that appear in the same order in an exported file, unless the
+# lab's own stub folder has them too (the signatures and includes the stubs share). /usr/bin/python3 is there: the build needs python3-glad.
 /usr/bin/python3 - "$root" "$out" "${INSTRUCTOR[@]}" <<'PY'
 import pathlib, sys
 root, out = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
@@ -64,12 +64,13 @@ for sol in (root / "solutions").rglob("*"):
     lab = root / "labs" / sol.relative_to(root / "solutions").parts[0]
     public = set()
     for f in lab.rglob("*"):
-        if f.is_file() and f.suffix in (".cpp", ".hpp", ".glsl", ".vert", ".frag", ".md"):
+        if f.is_file() and f.suffix in (".cpp", ".hpp", ".glsl", ".vert", ".frag", ".geom", ".comp", ".md"):
             public.update(code(f))
     c = code(sol)
     for i in range(len(c) - 2):
         w = tuple(c[i:i + 3])
-        if not all(line in public for line in w):
+        # Three lines of bare structure ("EmitVertex();", "}", "EndPrimitive();") tell nothing.
+        if max(len(line) for line in w) >= 24 and not all(line in public for line in w):
             windows[w] = sol.relative_to(root)
 leaks = 0
 for path in sys.argv[3:]:  # INSTRUCTOR: answers, the grader and the instructor docs

@@ -355,8 +355,9 @@ class Workspace:
         self.judge.mkdir(parents=True, exist_ok=True)
         os.chmod(self.judge.parent, 0o700)
         sync_tree(ROOT, self.src, edition_ignore(ROOT))
+        stub_shaders = {Path(f).name for lab in self.labs for f in student_files(lab) if f.startswith("shaders/")}
         sync_tree(ROOT / "labs", self.stubs, lambda folder, names: {n for n in names if Path(folder, n).is_file()
-                                                                    and n != "exercise.glsl"})
+                                                                    and n not in stub_shaders})
         self.reset_to_stubs()
         # Configured every time (a few seconds when nothing changed): a lab added since the last run
         # is otherwise an unknown target to the old Makefiles, which never get to regenerate.

@@ -80,7 +80,7 @@ def write_handout_section(lab, hints):
 def main():
     if len(sys.argv) != 2:
         sys.exit("usage: tools/make_hints.py BUILD_DIR")
-    build = Path(sys.argv[1])
+    build = Path(sys.argv[1]).resolve()  # the tests' apps run in other folders
     for lab_dir in sorted((ROOT / "tests/mutants").iterdir()):
         hints = []
         for mutant in sorted(lab_dir.glob("*.mutant")):

@@ -23,7 +23,7 @@ namespace wb::test {
 // the solution's binary (cmake/Lab.cmake), so that the two never write the same files at once.
 static fs::path outputDir() {
   const char* dir = std::getenv("WB_TEST_OUTPUT_DIR");
-  return dir && *dir ? fs::path(dir) : fs::path(variant::kOutputDir);
+  return dir && *dir ? fs::absolute(dir) : fs::path(variant::kOutputDir);  // (the app runs elsewhere)
 }
 
 namespace {
@@ -150,11 +150,28 @@ static std::vector<std::string> joined(std::vector<std::string> a, const std::ve
 // The app a judge trusts: the solution's (this build's in the student edition, which has none).
 static std::string trustedExe() { return variant::kSolutionExe[0] ? variant::kSolutionExe : variant::kLabExe; }
 
+IsolatedShaders::IsolatedShaders(const std::string& id) : dir_(outputDir() / ("isolated_" + id)) {
+  fs::create_directories(dir_);
+  for (const std::string& file : glslExerciseFiles()) std::ofstream(dir_ / file) << isolatedExerciseSource(file, id);
+  if (const char* old = std::getenv("WB_SHADER_OVERLAY")) previous_ = old, hadPrevious_ = true;
+  setenv("WB_SHADER_OVERLAY", dir_.c_str(), 1);
+}
+
+IsolatedShaders::~IsolatedShaders() {
+  if (hadPrevious_)
+    setenv("WB_SHADER_OVERLAY", previous_.c_str(), 1);
+  else
+    unsetenv("WB_SHADER_OVERLAY");
+}
+
+std::string IsolatedShaders::text(const std::string& file) const { return readFile(dir_ / file); }
+
 // The environment that makes an app use `id`'s isolated GLSL (the submission's chunk of a GLSL
 // exercise and the solution's other chunks; all solution for a C++ exercise), written into `out`.
 static std::string isolatedGlsl(const std::string& id, const fs::path& out) {
   if (*variant::kSolutionDir == '\0' || updatingGolden()) return "";
-  std::ofstream(out / "exercise.glsl") << isolatedExerciseSource("exercise.glsl", id);
+  for (const std::string& file : glslExerciseFiles())  // exercise.glsl, and a stage file such as a .geom
+    std::ofstream(out / file) << isolatedExerciseSource(file, id);
   return "WB_SHADER_OVERLAY=" + quote(out.string()) + " ";
 }
 
@@ -163,7 +180,7 @@ static std::string isolatedGlsl(const std::string& id, const fs::path& out) {
 // solution's GLSL.
 static nlohmann::json runDirect(const std::string& id, const fs::path& out, const std::vector<std::string>& args) {
   fs::create_directories(out);
-  const bool glsl = isGlslExercise("exercise.glsl", id);
+  const bool glsl = !glslExerciseFile(id).empty();
   const std::string exe = glsl && !updatingGolden() ? trustedExe() : variant::kLabExe;
   return runAppJson(out, "WB_STRICT_GL=1 " + isolatedGlsl(id, out), exe, args);
 }
@@ -227,7 +244,7 @@ static bool keepOnlyCalls(const fs::path& file, const std::string& id) {
 static nlohmann::json drawExercise(const std::string& id, const fs::path& out, const std::vector<std::string>& args) {
   const std::string key = nextObservationKey();
   if (tapeMode() == TapeMode::Direct) return runDirect(id, out, args);
-  const bool glsl = isGlslExercise("exercise.glsl", id);
+  const bool glsl = !glslExerciseFile(id).empty();
   if (const char* plan = std::getenv("WB_PLAN"); plan && *plan && tapeMode() == TapeMode::Replay) {
     // A judge's planning pass (held-out tests, which no runner has): the runs a runner must record.
     if (!glsl)
@@ -264,8 +281,10 @@ static ::testing::AssertionResult runIsolated(const std::string& id, const fs::p
   const int code = run.value("code", 128);
   logText = run.value("log", std::string());
   // A shader error names the isolated copy the app read; the student's own file is what to open.
-  const std::string copy = (out / "exercise.glsl").string(), mine = submittedShaderFile("exercise.glsl").string();
-  for (size_t at; (at = logText.find(copy)) != std::string::npos;) logText.replace(at, copy.size(), mine);
+  for (const std::string& file : glslExerciseFiles()) {
+    const std::string copy = (out / file).string(), mine = submittedShaderFile(file).string();
+    for (size_t at; (at = logText.find(copy)) != std::string::npos;) logText.replace(at, copy.size(), mine);
+  }
   if (code != 0) {
     // The first line names the cause (a compile error's file:line when there is one).
     std::string cause, last;
@@ -336,6 +355,7 @@ SceneMetrics measureScene(const std::string& id, const std::string& name, const 
   }
   m.acnePercent = *run.acnePercent, m.leakPercent = *run.leakPercent, m.gapTexels = run.gapTexels.value_or(-1);
   m.areaMeanAbsPercent = run.areaMeanAbsPercent.value_or(-1), m.areaOffPercent = run.areaOffPercent.value_or(-1);
+  m.seamErrorPercent = run.seamErrorPercent.value_or(-1), m.restErrorPercent = run.restErrorPercent.value_or(-1);
   m.penumbra = run.penumbra;
   return m;
 }

@@ -38,6 +38,25 @@ bool updatingGolden();
 std::vector<glm::vec4> runExercise(const std::string& id, const std::string& body, int count, int stride,
                                    const std::vector<glm::vec4>& inputs, const std::vector<unsigned>& textures = {});
 
+/// While it lives, this process's shaders (wb::Program, wb::shaderSearchPath) are exercise `id`'s
+/// isolated GLSL: the submission's chunk of `id` and the solution's other chunks, in every GLSL
+/// exercise file (exercise.glsl and stage files such as a .geom), written under the test outputs.
+/// For tests that build the lab's own programs in the test process. `text(file)` is what was written.
+class IsolatedShaders {
+ public:
+  explicit IsolatedShaders(const std::string& id);
+  ~IsolatedShaders();
+  IsolatedShaders(const IsolatedShaders&) = delete;
+  IsolatedShaders& operator=(const IsolatedShaders&) = delete;
+  /// The isolated text of GLSL exercise file `file` (e.g. "exercise_layered.geom").
+  std::string text(const std::string& file) const;
+
+ private:
+  std::filesystem::path dir_;
+  std::string previous_;
+  bool hadPrevious_ = false;
+};
+
 /// Runs a C++ exercise call; a wb::NotImplemented becomes a "NOT IMPLEMENTED" failure.
 #define WB_TRY_EXERCISE(statement)                       \
   try {                                                  \
@@ -76,11 +95,13 @@ std::string runLabOutput(const std::string& id, const std::string& name, const s
 /// Acne, leak and contact gap of one headless run (`--metrics`) of exercise `id`, isolated as in
 /// expectSceneMatchesGolden(); `failure` is set ("ERROR: …" or "NOT IMPLEMENTED: …") if it did not run.
 struct SceneMetrics {
-  double acnePercent = -1;                      ///< acne rate, in percent
-  double leakPercent = -1;                      ///< light leak, in percent
-  double gapTexels = -1;                        ///< contact gap in texels (-1 when not measured)
-  double areaMeanAbsPercent = -1;               ///< against the area light (-1 when the light has no size)
-  double areaOffPercent = -1;                   ///< the share off by more than 0.1 (-1 when not measured)
+  double acnePercent = -1;         ///< acne rate, in percent
+  double leakPercent = -1;         ///< light leak, in percent
+  double gapTexels = -1;           ///< contact gap in texels (-1 when not measured)
+  double areaMeanAbsPercent = -1;  ///< against the area light (-1 when the light has no size)
+  double areaOffPercent = -1;      ///< the share off by more than 0.1 (-1 when not measured)
+  double seamErrorPercent = -1;    ///< a cube map against its own lookups with rays, near face edges (-1: none)
+  double restErrorPercent = -1;    ///< the same, away from the face edges
   std::vector<std::array<double, 4>> penumbra;  ///< distance, theory, rendered, reference widths
   std::string failure;                          ///< empty when the run worked
 };

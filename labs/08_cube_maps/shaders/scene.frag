@@ -1,0 +1,38 @@
+#version 450 core
+// PASS 2 of lab 08: the point light's shadow from the cube map, hard (08.4) or soft (08.5).
+#include "exercise.glsl"
+#include "wb/lighting.glsl"
+#include "wb/outputs.glsl"
+in vec3 v_world;
+in vec3 v_normal;
+in vec2 v_uv;
+uniform vec3 u_color;
+uniform sampler2D u_albedo;
+uniform int u_hasTexture;
+uniform float u_alphaCutoff;
+layout(binding = 1) uniform samplerCube u_cube;
+uniform vec3 u_lightPos;
+uniform float u_far, u_bias, u_radius;
+uniform int u_samples;
+
+void main() {
+  vec4 texel = u_hasTexture != 0 ? texture(u_albedo, v_uv) : vec4(1.0);
+  if (texel.a < u_alphaCutoff) discard;
+  vec3 albedo = u_color * texel.rgb;
+  vec3 n = normalize(v_normal);
+  if (!gl_FrontFacing) n = -n;
+  vec3 toLight = normalize(u_lightPos - v_world);
+  bool facesLight = dot(n, toLight) > 0.0;
+#if CUBE_FILTER == 1
+  float visibility = cubePcf(u_cube, v_world, u_lightPos, u_far, u_bias, u_radius, u_samples);
+#else
+  float visibility = cubeShadow(u_cube, v_world, u_lightPos, u_far, u_bias);
+#endif
+  if (wbIsTodo(visibility)) {  // a stub: show it, never fake a shadow
+    wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
+    return;
+  }
+  // A lantern: light falls off with distance, gently, so the room reads as lit from one point.
+  float d = length(u_lightPos - v_world), falloff = min(1.2, 1.6 / (1.0 + 0.25 * d * d));
+  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(falloff), visibility), visibility, v_world, facesLight);
+}
