@@ -36,6 +36,11 @@ class Fields {
     if (!(v > 0)) fail(k, "must be greater than 0, got " + std::to_string(v));
     return v;
   }
+  bool flag(const char* k, bool fallback) const {
+    if (!has(k)) return fallback;
+    if (!j_[k].is_boolean()) fail(k, "must be true or false, got " + j_[k].dump());
+    return j_[k].get<bool>();
+  }
   std::string str(const char* k, const std::string& fallback) const {
     if (!has(k)) return fallback;
     if (!j_[k].is_string()) fail(k, "must be a string, got " + j_[k].dump());
@@ -112,10 +117,11 @@ void readObject(const json& entry, size_t i, const fs::path& file, const fs::pat
   if (shape == "tree") {  // a composite: an opaque trunk and an alpha-tested canopy
     const fs::path leaves = mat.texture.empty() ? dir / "textures/leaves.png" : mat.texture;
     scene.objects.push_back({name + ".trunk", makeTreeTrunk(), model, {{0.45f, 0.3f, 0.18f}, {}}});
-    scene.objects.push_back({name + ".canopy", makeTreeCanopy(), model, {mat.color, leaves}});
+    scene.objects.push_back({name + ".canopy", makeTreeCanopy(), model, {mat.color, leaves}, false});
     return;
   }
-  scene.objects.push_back({name, shapeMesh(shape, f), model, mat});
+  // An alpha-tested object has no closed outline to cast a volume from; the default follows that.
+  scene.objects.push_back({name, shapeMesh(shape, f), model, mat, f.flag("casts_volume", mat.texture.empty())});
 }
 
 Light readLight(const json& entry, size_t i, const fs::path& file) {
@@ -281,20 +287,23 @@ void GpuScene::setIndices(size_t object, const std::vector<uint32_t>& indices, G
 }
 
 size_t GpuScene::drawWelded(const Program& program, GLenum mode, bool depthClamp) const {
+  size_t drawn = 0;
+  for (size_t k = 0; k < items_.size(); ++k)
+    if (items_[k].mesh.weldedMode() == mode) drawObjectWelded(k, program, depthClamp), ++drawn;
+  return drawn;
+}
+
+void GpuScene::drawObjectWelded(size_t object, const Program& program, bool depthClamp) const {
+  if (object >= items_.size())
+    throw Error("drawObjectWelded: object " + std::to_string(object) + " of " + std::to_string(items_.size()));
   const GLboolean wasClamped = glIsEnabled(GL_DEPTH_CLAMP);
   if (depthClamp && !wasClamped) glEnable(GL_DEPTH_CLAMP);
   program.use();
   program.set("u_hasTexture", 0);
-  size_t drawn = 0;
-  for (const auto& it : items_) {
-    if (it.mesh.weldedMode() != mode) continue;
-    program.set("u_model", it.model);
-    program.set("u_color", it.color);
-    it.mesh.drawWelded();
-    ++drawn;
-  }
+  program.set("u_model", items_[object].model);
+  program.set("u_color", items_[object].color);
+  items_[object].mesh.drawWelded();
   if (depthClamp && !wasClamped) glDisable(GL_DEPTH_CLAMP);
-  return drawn;
 }
 
 }  // namespace wb

@@ -26,6 +26,9 @@ struct SceneObject {
   MeshData mesh;       ///< object-space geometry
   glm::mat4 model{1};  ///< object → world
   Material material;   ///< appearance
+  /// Casts a stencil shadow volume (lab 09; file field "casts_volume", default true unless the object
+  /// is textured: an alpha-tested outline is not its triangles' outline).
+  bool castsVolume = true;
 };
 
 /// The kinds of light a scene can hold.
@@ -99,6 +102,9 @@ class GpuScene {
   /// plane: shadow volumes extruded to infinity keep their far cap) and put back as it was
   /// afterwards; without it the depth-clamp state is left alone. Returns the number of objects drawn.
   size_t drawWelded(const Program& program, GLenum mode, bool depthClamp = false) const;
+  /// Draws object `object`'s welded positions with its welded index buffer, as drawWelded() does
+  /// (so a lab can change state between casters); throws wb::Error for an object out of range.
+  void drawObjectWelded(size_t object, const Program& program, bool depthClamp = false) const;
 
  private:
   struct Item {

@@ -55,6 +55,8 @@ json encode(const std::vector<glm::vec4>& v) {
   return j;
 }
 
+json encode(const std::vector<uint32_t>& v) { return json(v); }
+
 template <>
 float decode<float>(const json& j) {
   return fromBits(j.get<uint32_t>());
@@ -108,6 +110,18 @@ std::vector<glm::vec4> decode<std::vector<glm::vec4>>(const json& j) {
   if (f.size() % 4) throw Error("a recorded kernel output has the wrong shape");
   std::vector<glm::vec4> v;
   for (size_t k = 0; k + 3 < f.size(); k += 4) v.emplace_back(f[k], f[k + 1], f[k + 2], f[k + 3]);
+  return v;
+}
+
+template <>
+std::vector<uint32_t> decode<std::vector<uint32_t>>(const json& j) {
+  if (!j.is_array()) throw Error("a recorded index list is not a list");
+  std::vector<uint32_t> v;
+  v.reserve(j.size());
+  for (const auto& e : j) {
+    if (!e.is_number_unsigned()) throw Error("a recorded index list holds something that is not an index");
+    v.push_back(e.get<uint32_t>());
+  }
   return v;
 }
 

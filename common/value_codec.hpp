@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <vector>
 
 namespace wb {
@@ -20,6 +21,7 @@ nlohmann::json encode(const glm::vec4& v);               ///< its floats' bits
 nlohmann::json encode(const glm::dvec2& v);              ///< its doubles' bits
 nlohmann::json encode(const glm::mat4& v);               ///< column by column
 nlohmann::json encode(const std::vector<glm::vec4>& v);  ///< every float's bits, in order
+nlohmann::json encode(const std::vector<uint32_t>& v);   ///< as they are (indices, GL enums)
 /// Decodes what encode() wrote; throws wb::Error on malformed data.
 template <class T>
 T decode(const nlohmann::json& j);

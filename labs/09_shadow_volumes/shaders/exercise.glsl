@@ -1,0 +1,27 @@
+// Lab 09 exercises: stencil shadow volumes. Each function returns WB_TODO until you write it; a body
+// that still returns WB_TODO is reported as "not implemented". Check: ./workbook check 09
+// Keep the "// EXERCISE 09.x" lines: the grader finds each exercise by its line.
+//
+// Conventions (the tests rely on them): `light` is a point light (w = 1, xyz its position) or a
+// directional light (w = 0, xyz the unit direction *towards* the light). Triangles are
+// counter-clockwise seen from their front (outside).
+#include "wb/exercise.glsl"
+
+// EXERCISE 09.2: the silhouette test. facesLight: 1.0 when the front of triangle (a, b, c) faces the
+// light (the light is strictly on its front side), else 0.0.
+float facesLight(vec3 a, vec3 b, vec3 c, vec4 light) {
+  return WB_TODO;
+}
+
+// silhouetteEdge: for the edge from a to b of a triangle that faces the light, 1.0 when the edge is
+// on the silhouette: the triangle across it, (a, across, b), does not face the light. (An open
+// edge's `across` is the triangle's own third corner, which makes it a silhouette.)
+float silhouetteEdge(vec3 a, vec3 b, vec3 across, vec4 light) {
+  return WB_TODO;
+}
+
+// EXERCISE 09.3: the point `p` pushed away from the light to infinity: a direction in homogeneous
+// coordinates (w = 0), which the projection takes to the point at infinity on the light's ray.
+vec4 extrudeToInfinity(vec3 p, vec4 light) {
+  return vec4(WB_TODO);
+}

@@ -1,0 +1,33 @@
+#version 450 core
+// PASSES 1 and 3 of lab 09: the scene, ambient only with visibility 0 (pass 1, which also lays down
+// the depth), or fully lit with visibility 1 where the stencil count is 0 (pass 3). u_todo: the
+// volumes cannot be drawn yet (a stub), so the frame shows the not-implemented pattern instead.
+#include "wb/exercise.glsl"
+#include "wb/lighting.glsl"
+#include "wb/outputs.glsl"
+in vec3 v_world;
+in vec3 v_normal;
+in vec2 v_uv;
+uniform vec3 u_color;
+uniform sampler2D u_albedo;
+uniform int u_hasTexture;
+uniform float u_alphaCutoff;
+uniform vec4 u_light;  // w = 1: a point light at xyz; w = 0: xyz is the direction towards the light
+uniform int u_lit;
+uniform int u_todo;
+
+void main() {
+  vec4 texel = u_hasTexture != 0 ? texture(u_albedo, v_uv) : vec4(1.0);
+  if (texel.a < u_alphaCutoff) discard;
+  vec3 albedo = u_color * texel.rgb;
+  vec3 n = normalize(v_normal);
+  if (!gl_FrontFacing) n = -n;
+  vec3 toLight = normalize(u_light.w != 0.0 ? u_light.xyz - v_world : u_light.xyz);
+  bool facesLight = dot(n, toLight) > 0.0;
+  if (u_todo != 0) {
+    wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
+    return;
+  }
+  float visibility = u_lit != 0 ? 1.0 : 0.0;
+  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(1.0), visibility), visibility, v_world, facesLight);
+}
