@@ -1,9 +1,228 @@
-// Lab 09 tests (in progress).
+// Lab 09 tests. Layer 1: adjacency on hand-built meshes with the indices written out by hand (a
+// tetrahedron, an open quad) and on the framework's closed meshes (every edge's neighbour has it the
+// other way round); the silhouette test and the extrusion on synthetic triangles; the stencil
+// operations; the near-plane test against boxes placed by hand. Layer 2: the casters against golden
+// visibility, z-pass and z-fail, the camera inside a volume, and exactness against ray casting.
+#include "common/mesh.hpp"
 #include "exercise.hpp"
 #include "tests/harness/harness.hpp"
 
-TEST(Lab09, Ex09_1_Placeholder) {
-  std::vector<uint32_t> adj;
-  WB_TRY_EXERCISE(adj = WB_CALL(lab09::buildAdjacency({0, 1, 2})));
-  EXPECT_EQ(adj.size(), 6u);
+#include <glad/gl.h>
+
+#include <map>
+#include <sstream>
+
+using wb::test::GlTest;
+
+namespace {
+
+std::string listed(const std::vector<uint32_t>& v) {
+  std::ostringstream s;
+  for (size_t k = 0; k < v.size(); ++k) s << (k ? (k % 6 ? " " : " | ") : "") << v[k];
+  return s.str();
+}
+
+}  // namespace
+
+// --- 09.1: adjacency ----------------------------------------------------------------------------------
+// A tetrahedron, corners 0..3, faces counter-clockwise from outside: (0 2 1), (0 1 3), (1 2 3), (2 0 3).
+// Across edge 0-2 of the first face lies the face that has 2-0: (2 0 3), whose third corner is 3; and
+// so on for every edge.
+TEST(Lab09, Ex09_1_TetrahedronByHand) {
+  const std::vector<uint32_t> tris = {0, 2, 1, 0, 1, 3, 1, 2, 3, 2, 0, 3};
+  const std::vector<uint32_t> want = {0, 3, 2, 3, 1, 3,   // (0 2 1): 0-2 by (2 0 3), 2-1 by (1 2 3), 1-0 by (0 1 3)
+                                      0, 2, 1, 2, 3, 2,   // (0 1 3): 0-1 by (0 2 1), 1-3 by (1 2 3), 3-0 by (2 0 3)
+                                      1, 0, 2, 0, 3, 0,   // (1 2 3): 1-2 by (0 2 1), 2-3 by (2 0 3), 3-1 by (0 1 3)
+                                      2, 1, 0, 1, 3, 1};  // (2 0 3): 2-0 by (0 2 1), 0-3 by (0 1 3), 3-2 by (1 2 3)
+  std::vector<uint32_t> got;
+  WB_TRY_EXERCISE(got = WB_CALL(lab09::buildAdjacency(tris)));
+  ASSERT_EQ(got.size(), want.size()) << "WRONG: six indices per triangle: v0 a01 v1 a12 v2 a20";
+  EXPECT_EQ(listed(got), listed(want)) << "WRONG: the tetrahedron's adjacency (one triangle between bars)";
+}
+
+// An open quad, two triangles (0 1 2) and (0 2 3): one shared edge, four open ones. An open edge
+// gets the triangle's own third corner.
+TEST(Lab09, Ex09_1_OpenQuadByHand) {
+  const std::vector<uint32_t> tris = {0, 1, 2, 0, 2, 3};
+  const std::vector<uint32_t> want = {0, 2, 1, 0, 2, 3,   // 0-1 open (2), 1-2 open (0), 2-0 by (0 2 3): 3
+                                      0, 1, 2, 0, 3, 2};  // 0-2 by (0 1 2): 1, 2-3 open (0), 3-0 open (2)
+  std::vector<uint32_t> got;
+  WB_TRY_EXERCISE(got = WB_CALL(lab09::buildAdjacency(tris)));
+  EXPECT_EQ(listed(got), listed(want)) << "WRONG: the open quad's adjacency: open edges get the triangle's own "
+                                       << "third corner (one triangle between bars)";
+}
+
+// The framework's closed meshes: every edge (a, b) has a neighbour whose triangle holds (b, a) and
+// whose third corner is the one named.
+TEST(Lab09, Ex09_1_ClosedMeshesHaveANeighbourOnEveryEdge) {
+  const std::pair<const char*, wb::MeshData> meshes[] = {
+      {"box", wb::makeBox(glm::vec3(0.5f))}, {"sphere", wb::makeSphere(0.5f, 16, 8)}, {"torus", wb::makeTorus(0.6f, 0.2f)}};
+  for (const auto& [name, mesh] : meshes) {
+    const auto& t = mesh.weldedIndices;
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> third;
+    for (size_t k = 0; k + 2 < t.size(); k += 3)
+      for (size_t e = 0; e < 3; ++e) third[{t[k + e], t[k + (e + 1) % 3]}] = t[k + (e + 2) % 3];
+    std::vector<uint32_t> got;
+    WB_TRY_EXERCISE(got = WB_CALL(lab09::buildAdjacency(t)));
+    ASSERT_EQ(got.size(), 2 * t.size()) << "WRONG: " << name << ": six indices per triangle";
+    for (size_t k = 0; k + 2 < t.size(); k += 3)
+      for (size_t e = 0; e < 3; ++e) {
+        const uint32_t a = t[k + e], b = t[k + (e + 1) % 3];
+        ASSERT_EQ(got[2 * k + 2 * e], a) << "WRONG: " << name << ", triangle " << k / 3 << ": corner " << e
+                                         << " must stay at index " << 2 * e << " of its six";
+        ASSERT_EQ(got[2 * k + 2 * e + 1], third.at({b, a}))
+            << "WRONG: " << name << ", triangle " << k / 3 << ", edge " << a << "-" << b
+            << ": the corner across it is the third corner of the triangle that has " << b << "-" << a;
+      }
+  }
+}
+
+// --- 09.2: the silhouette test ------------------------------------------------------------------------
+// Triangle (0,0,0) (1,0,0) (0,1,0) faces +z. A point light at z = 2 is in front of it, at z = -2
+// behind it; a directional light towards +z is in front. Across the edge (0,0,0)-(1,0,0), the
+// neighbour (a, across, b) with `across` at (0.5,-1,-1) has the normal (0,-1,1) and faces the light
+// at z = 2; folded back over the triangle to (0.5,1,0.1) its normal is (0,0.1,-1) and it faces away,
+// so the edge is on the silhouette; flat, at (0.5,-1,0), it faces the light as the triangle does.
+TEST_F(GlTest, Ex09_2_FacesLightAndSilhouetteOnSyntheticTriangles) {
+  // IN(0): the light; IN(1): the neighbour's far corner. result.x = facesLight of the triangle,
+  // result.y = silhouetteEdge of its edge (0,0,0) -> (1,0,0).
+  const std::vector<glm::vec4> in = {
+      {0, 0, 2, 1},  {0.5f, -1, -1, 0},   // point light in front; neighbour continues the plane's lit side
+      {0, 0, 2, 1},  {0.5f, 1, 0.1f, 0},  // folded back over the triangle: faces away
+      {0, 0, 1, 0},  {0.5f, -1, 0, 0},    // directional, flat neighbour: faces the light too
+      {0, 0, -2, 1}, {0.5f, -1, 0, 0},    // light behind: the triangle faces away
+      {0, 0, 2, 1},  {0, 1, 0, 0},        // an open edge: the triangle's own third corner
+      {3, 3, 0.5f, 1}, {0.5f, -1, 0, 0},  // a light low over the plane, still in front
+  };
+  const float wantFaces[] = {1, 1, 1, 0, 1, 1};
+  const float wantSilhouette[] = {0, 1, 0, -1, 1, 0};  // -1: not asked (the triangle faces away)
+  std::vector<glm::vec4> got;
+  WB_RUN_GLSL(got, "09.2",
+              "result.x = facesLight(vec3(0.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), IN(0));"
+              "result.y = silhouetteEdge(vec3(0.0), vec3(1.0, 0.0, 0.0), IN(1).xyz, IN(0));",
+              6, 2, in);
+  for (size_t k = 0; k < 6; ++k) {
+    const glm::vec4 l = in[2 * k], n = in[2 * k + 1];
+    EXPECT_EQ(got[k].x, wantFaces[k]) << "WRONG: facesLight of (0,0,0) (1,0,0) (0,1,0), light (" << l.x << ", " << l.y
+                                      << ", " << l.z << ", w " << l.w << "), case " << k;
+    if (wantSilhouette[k] < 0) continue;
+    EXPECT_EQ(got[k].y, wantSilhouette[k])
+        << "WRONG: silhouetteEdge of (0,0,0) -> (1,0,0) with the far corner across at (" << n.x << ", " << n.y << ", "
+        << n.z << "), light (" << l.x << ", " << l.y << ", " << l.z << ", w " << l.w << "), case " << k;
+  }
+}
+
+// --- 09.3: extrusion ----------------------------------------------------------------------------------
+TEST_F(GlTest, Ex09_3_ExtrudesAwayFromTheLightToInfinity) {
+  // (point, light) pairs: two point lights, two directional ones (xyz towards the light).
+  const std::vector<glm::vec4> in = {{1, 0, 0, 0}, {0, 0, 0, 1}, {2, 3, -1, 0}, {-1, 4, 0, 1},
+                                     {0, 1, 0, 0}, {0, 1, 0, 0}, {1, 1, 1, 0}, {0.6f, 0.8f, 0, 0}};
+  std::vector<glm::vec4> got;
+  WB_RUN_GLSL(got, "09.3", "result = extrudeToInfinity(IN(0).xyz, IN(1));", 4, 2, in);
+  for (size_t k = 0; k < 4; ++k) {
+    const glm::vec3 p(in[2 * k]);
+    const glm::vec4 l = in[2 * k + 1];
+    const glm::vec3 want = l.w != 0 ? p - glm::vec3(l) : -glm::vec3(l);
+    EXPECT_EQ(got[k].w, 0.0f) << "WRONG: a point at infinity has w = 0 (w = 1 is a finite point, which the far "
+                              << "plane clips), case " << k;
+    EXPECT_NEAR(glm::length(glm::cross(glm::vec3(got[k]), want)), 0, 1e-4)
+        << "WRONG: the point (" << p.x << ", " << p.y << ", " << p.z << ") goes to infinity along the light's ray, ("
+        << want.x << ", " << want.y << ", " << want.z << "), case " << k;
+    EXPECT_GT(glm::dot(glm::vec3(got[k]), want), 0) << "WRONG: away from the light, not towards it, case " << k;
+  }
+}
+
+// --- 09.4 and 09.5: the stencil operations ------------------------------------------------------------
+TEST(Lab09, Ex09_4_ZPassCountsFacesInFrontOfTheScene) {
+  lab09::StencilSetup s;
+  WB_TRY_EXERCISE(s = lab09::zPassSetup());
+  EXPECT_EQ(s.front.depthPass, unsigned(GL_INCR_WRAP)) << "WRONG: a front face in front of the scene enters a "
+                                                       << "volume: +1, wrapping (GL_INCR_WRAP)";
+  EXPECT_EQ(s.back.depthPass, unsigned(GL_DECR_WRAP)) << "WRONG: a back face in front of the scene leaves it: -1, "
+                                                      << "wrapping (GL_DECR_WRAP)";
+  for (auto [op, what] : {std::pair{s.front.stencilFail, "front, stencil fail"}, {s.front.depthFail, "front, depth fail"},
+                          {s.back.stencilFail, "back, stencil fail"}, {s.back.depthFail, "back, depth fail"}})
+    EXPECT_EQ(op, unsigned(GL_KEEP)) << "WRONG: z-pass counts only faces that pass the depth test (" << what << ")";
+  EXPECT_FALSE(s.caps) << "WRONG: z-pass needs no caps: a ray from the eye enters and leaves through the sides";
+}
+
+TEST(Lab09, Ex09_5_ZFailCountsFacesBehindTheSceneWithCaps) {
+  lab09::StencilSetup s;
+  WB_TRY_EXERCISE(s = lab09::zFailSetup());
+  EXPECT_EQ(s.back.depthFail, unsigned(GL_INCR_WRAP)) << "WRONG: a back face behind the scene: +1, wrapping";
+  EXPECT_EQ(s.front.depthFail, unsigned(GL_DECR_WRAP)) << "WRONG: a front face behind the scene: -1, wrapping";
+  for (auto [op, what] : {std::pair{s.front.stencilFail, "front, stencil fail"}, {s.front.depthPass, "front, depth pass"},
+                          {s.back.stencilFail, "back, stencil fail"}, {s.back.depthPass, "back, depth pass"}})
+    EXPECT_EQ(op, unsigned(GL_KEEP)) << "WRONG: z-fail counts only faces that fail the depth test (" << what << ")";
+  EXPECT_TRUE(s.caps) << "WRONG: z-fail counts behind the scene, out to infinity: the volumes must be closed there "
+                      << "(caps), or a ray that leaves through the missing cap is never counted";
+}
+
+// --- 09.6: the camera inside a volume -----------------------------------------------------------------
+// A near quad in the plane z = 0, x and y in [-1, 1]; the light above it at z = 10 (point) or along +z
+// (directional). Boxes between them shadow it; boxes beside, below or beyond the light do not. (A
+// box that only reaches into the planes' corners may be answered either way, so none is asked.)
+TEST(Lab09, Ex09_6_NearPlaneShadowedOnlyByBoxesBetweenItAndTheLight) {
+  const std::array<glm::vec3, 4> quad = {glm::vec3(-1, -1, 0), {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  struct Case {
+    glm::vec4 light;
+    glm::vec3 lo, hi;
+    bool want;
+    const char* what;
+  };
+  const Case cases[] = {
+      {{0, 0, 10, 1}, {-0.2f, -0.2f, 4}, {0.2f, 0.2f, 5}, true, "a small box straight between the quad and the light"},
+      {{0, 0, 10, 1}, {-5, -5, 2}, {5, 5, 3}, true, "a slab bigger than the quad, between it and the light"},
+      {{0, 0, 10, 1}, {0.9f, 0.9f, -0.5f}, {1.5f, 1.5f, 0.5f}, true, "a box across the quad's corner"},
+      {{0, 0, 10, 1}, {3, -0.5f, 1}, {4, 0.5f, 2}, false, "a box beside the pyramid from the light to the quad"},
+      {{0, 0, 10, 1}, {-0.5f, -0.5f, -3}, {0.5f, 0.5f, -2}, false, "a box behind the quad, away from the light"},
+      {{0, 0, 10, 1}, {-0.2f, -0.2f, 13}, {0.2f, 0.2f, 14}, false, "a small box beyond the light"},
+      {{0, 0, 1, 0}, {3, 3, 50}, {4, 4, 60}, false, "directional: a box far up but off to the side"},
+      {{0, 0, 1, 0}, {-0.5f, -0.5f, 50}, {0.5f, 0.5f, 60}, true, "directional: a box far up over the quad"},
+      {{0, 0, 1, 0}, {-0.5f, -0.5f, -60}, {0.5f, 0.5f, -50}, false, "directional: a box below the quad"},
+      {{6, 0, 5, 1}, {3, -0.3f, 2}, {3.4f, 0.3f, 3}, true, "a light off to the side: a box on the slanted pyramid"},
+      {{6, 0, 5, 1}, {-0.5f, -0.5f, 4}, {0.5f, 0.5f, 5}, false, "a light off to the side: a box straight above"},
+  };
+  for (const auto& c : cases) {
+    bool got = false;
+    WB_TRY_EXERCISE(got = WB_CALL(lab09::nearPlaneMayBeShadowed(quad, c.light, c.lo, c.hi)));
+    EXPECT_EQ(got, c.want) << "WRONG: " << c.what << ": box (" << c.lo.x << ", " << c.lo.y << ", " << c.lo.z << ") to ("
+                           << c.hi.x << ", " << c.hi.y << ", " << c.hi.z << "), light (" << c.light.x << ", "
+                           << c.light.y << ", " << c.light.z << ", w " << c.light.w << ")";
+  }
+}
+
+// --- Layer 2 ------------------------------------------------------------------------------------------
+namespace {
+const float kTol = 0.1f;
+const double kMaxFraction = 0.005;
+const std::vector<std::string> kOverview = wb::test::labArgs({});
+const std::vector<std::string> kInside = wb::test::labArgs({"camera.bookmark=3"});
+}  // namespace
+
+TEST(Lab09, Ex09_1_SceneCasters) { wb::test::expectSceneMatchesGolden("09.1", "casters", kOverview, kTol, kMaxFraction); }
+TEST(Lab09, Ex09_2_SceneCasters) { wb::test::expectSceneMatchesGolden("09.2", "casters", kOverview, kTol, kMaxFraction); }
+TEST(Lab09, Ex09_3_SceneCasters) { wb::test::expectSceneMatchesGolden("09.3", "casters", kOverview, kTol, kMaxFraction); }
+TEST(Lab09, Ex09_4_SceneCastersZPass) {
+  wb::test::expectSceneMatchesGolden("09.4", "casters", wb::test::labArgs({"volume.method=zpass"}), kTol, kMaxFraction);
+}
+TEST(Lab09, Ex09_5_SceneInsideZFail) {
+  wb::test::expectSceneMatchesGolden("09.5", "inside", wb::test::labArgs({"camera.bookmark=3", "volume.method=zfail"}),
+                                     kTol, kMaxFraction);
+}
+TEST(Lab09, Ex09_6_SceneInsideAuto) { wb::test::expectSceneMatchesGolden("09.6", "inside", kInside, kTol, kMaxFraction); }
+
+// Exact per pixel: against a ray from every light-facing pixel to the light, the volumes disagree only
+// where a silhouette's rasterisation and the ray differ (the solution: 0.005% at 480x270).
+TEST(Lab09, Ex09_2_MeasuredExactAgainstRays) {
+  const auto m = wb::test::measureScene("09.2", "measure_casters", kOverview);
+  if (!m.failure.empty()) FAIL() << m.failure;
+  EXPECT_LT(m.acnePercent + m.leakPercent, 0.2) << "WRONG: lit pixels drawn shadowed " << m.acnePercent
+                                                << "%, shadowed ones drawn lit " << m.leakPercent << "%";
+}
+TEST(Lab09, Ex09_5_MeasuredExactWithTheCameraInside) {
+  const auto m = wb::test::measureScene("09.5", "measure_inside", wb::test::labArgs({"camera.bookmark=3", "volume.method=zfail"}));
+  if (!m.failure.empty()) FAIL() << m.failure;
+  EXPECT_LT(m.acnePercent + m.leakPercent, 0.2) << "WRONG: with the camera inside a volume, lit pixels drawn shadowed "
+                                                << m.acnePercent << "%, shadowed ones drawn lit " << m.leakPercent << "%";
 }
