@@ -80,9 +80,45 @@ void writeBench(const std::string& path, const std::string& lab, glm::ivec2 size
                 std::filesystem::absolute(path).string().c_str());
 }
 
+namespace {
+
+// One row of a sweep: the settings' values, what was measured, and the mean of each pass and frame.
+struct SweepRow {
+  std::vector<std::string> cells;
+  std::optional<MeasureResult> measured;
+  std::vector<std::pair<std::string, double>> passes;  // name, mean ms (passes drawn in this row only)
+  double wallMs = 0;
+};
+
+// Times `timed` frames of the settings as they are: the wall clock over frames of their own where
+// timing passes slows the frame (gpu_timers.hpp), then the passes.
+SweepRow timeRow(int timed, GpuTimers& timers, const std::function<void()>& frame) {
+  SweepRow r;
+  frame();  // warm-up: allocations, first use of a program
+  timers.collect(true, false);
+  timers.resetStats();
+  const bool apart = timers.perturbs();
+  timers.enable(!apart);
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int f = 0; f < timed; ++f) {
+    frame();
+    timers.collect(true, true);
+  }
+  r.wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / timed;
+  timers.enable(true);
+  for (int f = 0; apart && f < timed; ++f) {
+    frame();
+    timers.collect(true, true);
+  }
+  for (const auto& [name, st] : timers.passes())
+    if (st.count) r.passes.emplace_back(name, st.mean());
+  return r;
+}
+
+}  // namespace
+
 int runSweep(const Options& o, Settings& settings, GpuTimers& timers, const std::function<void()>& frame,
              const std::function<MeasureResult()>& measure) {
-  const int timed = std::max(1, o.frames);
   std::ofstream csv;
   if (!o.sweepCsv.empty()) {
     csv.open(o.sweepCsv);
@@ -90,61 +126,46 @@ int runSweep(const Options& o, Settings& settings, GpuTimers& timers, const std:
   }
   size_t total = 1;
   for (const auto& sw : o.sweeps) total *= sw.second.size();
-  std::vector<std::string> passNames;
-  bool seams = false;
+  std::vector<SweepRow> rows;
   for (size_t n = 0; n < total; ++n) {
-    std::vector<std::string> cells;
+    std::vector<std::string> values;
     size_t k = n;
     for (auto it = o.sweeps.rbegin(); it != o.sweeps.rend(); ++it) {  // the last key varies fastest
       const std::string& v = it->second[k % it->second.size()];
       settings.assign(it->first + "=" + v);
-      cells.insert(cells.begin(), v);
+      values.insert(values.begin(), v);
       k /= it->second.size();
     }
     std::fprintf(stderr, "\rsweep %zu/%zu ", n + 1, total);
-    frame();  // warm-up: allocations, first use of a program
-    timers.collect(true, false);
-    timers.resetStats();
-    // Where timing passes slows the frame (gpu_timers.hpp), the frame time comes from frames of its own.
-    const bool apart = timers.perturbs();
-    timers.enable(!apart);
-    const auto t0 = std::chrono::steady_clock::now();
-    for (int f = 0; f < timed; ++f) {
-      frame();
-      timers.collect(true, true);
-    }
-    const double wall =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / timed;
-    timers.enable(true);
-    for (int f = 0; apart && f < timed; ++f) {
-      frame();
-      timers.collect(true, true);
-    }
-    std::optional<MeasureResult> measured;
-    if (o.metrics) measured = measure();
-    if (n == 0) {  // the header, once the passes (and whether the light has a cube map) are known
-      for (const auto& p : timers.passes()) passNames.push_back(p.first);
-      seams = measured && measured->seams.seam.pixels + measured->seams.rest.pixels > 0;
-      const auto h = header(o, passNames, seams);
-      row(h, csv);
-      std::string rule = "|";
-      for (size_t c = 0; c < h.size(); ++c) rule += "---|";
-      std::printf("%s\n", rule.c_str());
-    }
-    if (measured) {
-      const auto m = measuredCells(*measured, seams);
-      cells.insert(cells.end(), m.begin(), m.end());
-    }
-    for (const auto& p : passNames) {
-      const PassStats* st = nullptr;
-      for (const auto& [name, s] : timers.passes())
-        if (name == p) st = &s;
-      cells.push_back(st && st->count ? strf("%.3f", st->mean()) : "-");
-    }
-    cells.push_back(strf("%.2f", wall));
-    row(cells, csv);
+    rows.push_back(timeRow(std::max(1, o.frames), timers, frame));
+    rows.back().cells = values;
+    if (o.metrics) rows.back().measured = measure();
   }
   std::fprintf(stderr, "\r%*s\r", 24, "");
+  // The table, once every row's passes (a technique may have passes of its own) are known.
+  std::vector<std::string> passNames;
+  for (const auto& [name, st] : timers.passes()) passNames.push_back(name);
+  const bool seams = !rows.empty() && rows[0].measured &&
+                     rows[0].measured->seams.seam.pixels + rows[0].measured->seams.rest.pixels > 0;
+  const auto h = header(o, passNames, seams);
+  row(h, csv);
+  std::string rule = "|";
+  for (size_t c = 0; c < h.size(); ++c) rule += "---|";
+  std::printf("%s\n", rule.c_str());
+  for (SweepRow& r : rows) {
+    if (r.measured) {
+      const auto m = measuredCells(*r.measured, seams);
+      r.cells.insert(r.cells.end(), m.begin(), m.end());
+    }
+    for (const auto& name : passNames) {
+      std::string cell = "-";
+      for (const auto& [n, ms] : r.passes)
+        if (n == name) cell = strf("%.3f", ms);
+      r.cells.push_back(cell);
+    }
+    r.cells.push_back(strf("%.2f", r.wallMs));
+    row(r.cells, csv);
+  }
   if (csv.is_open()) std::printf("wrote %s\n", std::filesystem::absolute(o.sweepCsv).string().c_str());
   return 0;
 }

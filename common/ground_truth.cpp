@@ -84,6 +84,36 @@ FloatImage filteredPointVisibility(const RayScene& rays, const glm::vec3& light,
   return out;
 }
 
+FloatImage rayTracedVisibility(const RayScene& rays, const Light& light, const glm::mat4& invViewProj, int width,
+                               int height, int threads) {
+  FloatImage out{width, height, std::vector<float>(size_t(width) * size_t(height))};
+  auto unproject = [&](float x, float y, float z) {
+    const glm::vec4 p = invViewProj * glm::vec4(x, y, z, 1);
+    return glm::vec3(p) / p.w;
+  };
+  forEachRow(
+      height,
+      [&](int y) {
+        for (int x = 0; x < width; ++x) {
+          const float nx = (float(x) + 0.5f) / float(width) * 2 - 1, ny = (float(y) + 0.5f) / float(height) * 2 - 1;
+          const glm::vec3 from = unproject(nx, ny, -1), dir = glm::normalize(unproject(nx, ny, 1) - from);
+          const float far = 1e30f, t = rays.firstHit(from, dir, 0, far);
+          float v = std::numeric_limits<float>::quiet_NaN();
+          if (t < far) {
+            const glm::vec3 p = from + t * dir;
+            glm::vec3 toLight = -light.direction;
+            float tMax = std::numeric_limits<float>::infinity();
+            if (light.type != LightType::Directional)
+              tMax = glm::length(light.position - p), toLight = (light.position - p) / tMax;
+            v = rays.occluded(p, toLight, 1e-3f, tMax) ? 0.0f : 1.0f;
+          }
+          out.pixels[size_t(y) * size_t(width) + size_t(x)] = v;
+        }
+      },
+      threads);
+  return out;
+}
+
 double degreesFromCubeSeam(const glm::vec3& d) {
   glm::dvec3 a = glm::abs(glm::dvec3(d));
   if (a.x < a.y) std::swap(a.x, a.y);

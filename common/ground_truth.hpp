@@ -59,6 +59,13 @@ struct ReferenceDifference {
 ReferenceDifference compareWithReference(const FloatImage& rendered, const std::vector<float>& reference, int x0,
                                          int x1);
 
+/// Ray-traced shadows as a render mode: a ray through the centre of every pixel of the camera whose
+/// inverse view-projection is `invViewProj` (rows bottom to top) to the first surface, then one ray
+/// from there to `light`: 1 lit, 0 shadowed (a closed caster's back faces shadow themselves), NaN
+/// where the first ray meets nothing. On `threads` threads (0: every core).
+FloatImage rayTracedVisibility(const RayScene& rays, const Light& light, const glm::mat4& invViewProj, int width,
+                               int height, int threads);
+
 /// A point light's frame split by where its cube map is read: the pixels whose direction from the
 /// light lies within `degrees` of a boundary between two faces (the seams), and the rest. Each half
 /// holds |rendered − exact| over its light-facing pixels (exact not NaN), as a ReferenceDifference.

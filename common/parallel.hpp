@@ -8,11 +8,12 @@
 
 namespace wb {
 
-/// Calls body(y) for every y in [0, height), rows interleaved across the machine's cores; returns
-/// when all are done. `body` must be safe to run on several rows at once.
+/// Calls body(y) for every y in [0, height), rows interleaved across the machine's cores (or
+/// `threadCount` threads, when it is above 0); returns when all are done. `body` must be safe to run
+/// on several rows at once.
 template <class F>
-void forEachRow(int height, F body) {
-  const int threads = int(std::max(1u, std::thread::hardware_concurrency()));
+void forEachRow(int height, F body, int threadCount = 0) {
+  const int threads = threadCount > 0 ? threadCount : int(std::max(1u, std::thread::hardware_concurrency()));
   std::vector<std::thread> pool;
   for (int t = 0; t < threads; ++t)
     pool.emplace_back([=] {

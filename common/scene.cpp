@@ -88,7 +88,12 @@ MeshData shapeMesh(const std::string& shape, const Fields& f) {
     return makePlane(s.x, s.z);
   }
   if (shape == "box") return makeBox(f.vec3("size", glm::vec3(1)) * 0.5f);
-  if (shape == "sphere") return makeSphere(f.positive("radius", 0.5f));
+  if (shape == "sphere") {  // "segments" around (and half as many from pole to pole)
+    const float segments = f.num("segments", 32);
+    if (!(segments >= 4 && segments <= 512) || segments != float(int(segments)))
+      f.fail("segments", "must be a whole number from 4 to 512, got " + std::to_string(segments));
+    return makeSphere(f.positive("radius", 0.5f), int(segments), int(segments) / 2);
+  }
   if (shape == "cylinder") return makeCylinder(f.positive("radius", 0.5f), f.positive("height", 1));
   if (shape == "torus") return makeTorus(f.positive("radius", 0.6f), f.positive("tube", 0.2f));
   if (shape == "bench") return makeBench();

@@ -43,7 +43,7 @@ StencilSetup zFailSetup();
 /// reaches into the region between the light and the near quad (for a directional light, the quad
 /// swept towards the light): z-pass is then unsafe. A true for a box that misses the region only
 /// costs z-fail's caps; a false for a box in it inverts the shadows.
-bool nearPlaneMayBeShadowed(const std::array<glm::vec3, 4>& nearQuad, const glm::vec4& light,
-                            const glm::vec3& boxMin, const glm::vec3& boxMax);
+bool nearPlaneMayBeShadowed(const std::array<glm::vec3, 4>& nearQuad, const glm::vec4& light, const glm::vec3& boxMin,
+                            const glm::vec3& boxMax);
 
 }  // namespace lab09

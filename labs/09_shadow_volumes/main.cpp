@@ -6,10 +6,12 @@
 // No map at all: every caster's silhouette, as the light sees it, is pushed to infinity, and the
 // stencil buffer counts, per pixel, how many of those volumes the pixel lies in. Zero means lit.
 // The shadows are exact to the pixel; the price is fill rate and a pass over the geometry.
+#include "common/ground_truth.hpp"
 #include "common/lab.hpp"
 #include "exercise.hpp"
 
 #include <array>
+#include <memory>
 #include <string>
 
 namespace {
@@ -20,6 +22,10 @@ class VolumeLab : public wb::Lab {
     settings.addChoice("volume.method", method, {"auto", "zpass", "zfail"},
                        "auto: z-fail for the casters whose volume may hold the camera's near plane (09.6), "
                        "z-pass for the rest; zpass or zfail: one method for every caster");
+    settings.addChoice("shadow.technique", technique, {"volumes", "shadow_map", "ray_traced"},
+                       "volumes: this lab; shadow_map: a 2048² map, slope-scaled bias and 2x2 PCF, to compare; "
+                       "ray_traced: a ray per pixel to the first surface and one to the light, on the CPU");
+    settings.add("ray_traced.threads", threads, 0, 64, "ray_traced: CPU threads (0: every core)");
     settings.add("debug.volumes", showVolumes, "draw the volumes translucent over the frame");
     settings.add("debug.silhouettes", showSilhouettes, "draw the silhouette edges as lines");
     settings.add("debug.stencil", showCounts, "colour each pixel by its stencil count (0 black, then 1, 2, 3, ...)");
@@ -30,9 +36,11 @@ class VolumeLab : public wb::Lab {
     sceneProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/scene.vert"}, {GL_FRAGMENT_SHADER, "scene.frag"}});
     volumeProgram = &loadProgram(
         {{GL_VERTEX_SHADER, "volume.vert"}, {GL_GEOMETRY_SHADER, "volume.geom"}, {GL_FRAGMENT_SHADER, "flat.frag"}});
-    edgeProgram = &loadProgram(
-        {{GL_VERTEX_SHADER, "volume.vert"}, {GL_GEOMETRY_SHADER, "silhouette.geom"}, {GL_FRAGMENT_SHADER, "flat.frag"}});
+    edgeProgram = &loadProgram({{GL_VERTEX_SHADER, "volume.vert"},
+                                {GL_GEOMETRY_SHADER, "silhouette.geom"},
+                                {GL_FRAGMENT_SHADER, "flat.frag"}});
     flatProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "flat.frag"}});
+    depthProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/depth.vert"}, {GL_FRAGMENT_SHADER, "wb/depth.frag"}});
     glslExercise("09.2", "exercise.glsl",
                  "facesLight(vec3(0.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec4(0.0, 0.0, 1.0, 0.0)) + "
                  "silhouetteEdge(vec3(0.0), vec3(1.0, 0.0, 0.0), vec3(0.0, -1.0, 0.0), vec4(0.0, 0.0, 1.0, 0.0))");
@@ -54,8 +62,8 @@ class VolumeLab : public wb::Lab {
 
   void render() override {
     const wb::Light& light = scene.lights[size_t(lightIndex)];
-    const glm::vec4 l = light.type == wb::LightType::Directional ? glm::vec4(-light.direction, 0)
-                                                                 : glm::vec4(light.position, 1);
+    const glm::vec4 l =
+        light.type == wb::LightType::Directional ? glm::vec4(-light.direction, 0) : glm::vec4(light.position, 1);
     wb::LightView shown;
     shown.light = light;
     showLight(shown);  // no map: the measurement casts its rays to this light
@@ -63,12 +71,14 @@ class VolumeLab : public wb::Lab {
     const bool counted = attempt("09.4", zpass, [] { return packed(lab09::zPassSetup()); }) &&
                          attempt("09.5", zfail, [] { return packed(lab09::zFailSetup()); });
     const bool ready = adjacent_ && counted && implemented("09.2") && implemented("09.3");
+    if (technique == 1) return renderShadowMapped(light, l);
 
     // PASS 1: the scene's depth, lit by the ambient term only (visibility 0).
     {
       auto timer = timePass("depth");
-      drawScene(l, false, !ready);
+      drawScene(l, false, !ready && technique == 0);
     }
+    if (technique == 2) return renderRayTraced(light, l);
     if (!ready) return;  // a stub: the frame shows the not-implemented pattern
 
     // PASS 2: the volumes into the stencil buffer only: no colour, no depth writes, depth clamp on
@@ -101,9 +111,8 @@ class VolumeLab : public wb::Lab {
  private:
   // A StencilSetup as the numbers the exercise tape records: front ops, back ops, caps.
   static std::vector<uint32_t> packed(const lab09::StencilSetup& s) {
-    return {s.front.stencilFail, s.front.depthFail, s.front.depthPass,
-            s.back.stencilFail,  s.back.depthFail,  s.back.depthPass,
-            s.caps ? 1u : 0u};
+    return {s.front.stencilFail, s.front.depthFail, s.front.depthPass, s.back.stencilFail,
+            s.back.depthFail,    s.back.depthPass,  s.caps ? 1u : 0u};
   }
 
   bool implemented(const std::string& id) const {
@@ -112,13 +121,66 @@ class VolumeLab : public wb::Lab {
     return false;
   }
 
-  void drawScene(const glm::vec4& l, bool lit, bool todo) {
+  void drawScene(const glm::vec4& l, bool lit, bool todo, const glm::mat4& lightViewProj = glm::mat4(1),
+                 GLuint shadowMap = 0) {
     const wb::Program& p = *sceneProgram;
-    beginCameraPass(p, glm::mat4(1), 0);
+    beginCameraPass(p, lightViewProj, shadowMap);
     p.set("u_light", l);
     p.set("u_lit", lit ? 1 : 0);
     p.set("u_todo", todo ? 1 : 0);
+    p.set("u_technique", technique);
     gpuScene->draw(p);
+  }
+
+  // The comparison: a 2048² shadow map with slope-scaled bias, looked up with hardware 2x2 PCF.
+  void renderShadowMapped(const wb::Light& light, const glm::vec4& l) {
+    const glm::mat4 lightViewProj = wb::lightViewProj(light, scene);
+    map.resize(2048);
+    {
+      auto timer = timePass("shadow_map");
+      glEnable(GL_POLYGON_OFFSET_FILL);
+      glPolygonOffset(1.5f, 2.0f);
+      renderShadowMap(*depthProgram, map, light, lightViewProj);
+      glDisable(GL_POLYGON_OFFSET_FILL);
+    }
+    auto timer = timePass("lighting");
+    if (!compare.id()) compare = comparisonSampler();
+    glBindSampler(0, compare.id());
+    drawScene(l, true, false, lightViewProj, map.texture());
+    glBindSampler(0, 0);
+  }
+
+  static wb::Sampler comparisonSampler() {
+    GLuint id = 0;
+    glCreateSamplers(1, &id);
+    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glSamplerParameteri(id, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    const float one[4] = {1, 1, 1, 1};
+    glSamplerParameterfv(id, GL_TEXTURE_BORDER_COLOR, one);
+    return wb::Sampler(id);
+  }
+
+  // The ground truth as a render mode: the CPU casts a ray through every pixel and one to the light
+  // (on ray_traced.threads threads); the lighting pass reads the result.
+  void renderRayTraced(const wb::Light& light, const glm::vec4& l) {
+    const glm::ivec2 size = frameSize();
+    {
+      auto timer = timePass("ray_tracing_cpu");
+      if (!rays) rays = std::make_unique<wb::RayScene>(scene, alphaCutoff());
+      const wb::FloatImage v = wb::rayTracedVisibility(*rays, light, glm::inverse(viewProj()), size.x, size.y, threads);
+      if (traced.id() == 0 || tracedSize != size)
+        traced = wb::makeTexture2D(GL_R32F, size.x, size.y), tracedSize = size;
+      glTextureSubImage2D(traced.id(), 0, 0, 0, size.x, size.y, GL_RED, GL_FLOAT, v.pixels.data());
+    }
+    auto timer = timePass("lighting");
+    glBindTextureUnit(1, traced.id());
+    glDepthFunc(GL_LEQUAL);
+    drawScene(l, true, false);
+    glDepthFunc(GL_LESS);
   }
 
   // Every caster's volume, counted by z-pass or z-fail: the setting, or per caster by 09.6.
@@ -170,7 +232,8 @@ class VolumeLab : public wb::Lab {
   // silhouette edges as lines.
   void drawDebugViews(const glm::vec4& l, const std::vector<uint32_t>& zpass, const std::vector<uint32_t>& zfail) {
     if (showCounts) {
-      const glm::vec4 colours[4] = {{0.9f, 0.8f, 0.1f, 1}, {0.9f, 0.4f, 0.1f, 1}, {0.8f, 0.1f, 0.2f, 1}, {0.5f, 0.1f, 0.6f, 1}};
+      const glm::vec4 colours[4] = {
+          {0.9f, 0.8f, 0.1f, 1}, {0.9f, 0.4f, 0.1f, 1}, {0.8f, 0.1f, 0.2f, 1}, {0.5f, 0.1f, 0.6f, 1}};
       wb::VertexArray empty = wb::makeEmptyVertexArray();
       glBindVertexArray(empty.id());
       glDisable(GL_DEPTH_TEST);
@@ -209,9 +272,17 @@ class VolumeLab : public wb::Lab {
   wb::Program* volumeProgram = nullptr;  // PASS 2 (and debug.volumes)
   wb::Program* edgeProgram = nullptr;    // debug.silhouettes
   wb::Program* flatProgram = nullptr;    // debug.stencil
-  bool adjacent_ = true;                 // 09.1 gave every caster its adjacency
-  int method = 0;                        // auto
-  int zfailCasters = 0;                  // this frame's casters counted by z-fail
+  wb::Program* depthProgram = nullptr;   // shadow_map: the map
+  wb::ShadowMap map;                     // shadow_map
+  wb::Sampler compare;                   // shadow_map: 2x2 PCF
+  std::unique_ptr<wb::RayScene> rays;    // ray_traced
+  wb::Texture traced;                    // ray_traced: the CPU's visibility
+  glm::ivec2 tracedSize{0};
+  int technique = 0;      // volumes
+  int threads = 0;        // every core
+  bool adjacent_ = true;  // 09.1 gave every caster its adjacency
+  int method = 0;         // auto
+  int zfailCasters = 0;   // this frame's casters counted by z-fail
   bool showVolumes = false, showSilhouettes = false, showCounts = false;
 };
 

@@ -14,8 +14,7 @@ namespace lab09 {
 std::vector<uint32_t> buildAdjacency(const std::vector<uint32_t>& triangles) {
   std::map<std::pair<uint32_t, uint32_t>, uint32_t> third;  // directed edge -> the third corner
   for (size_t k = 0; k + 2 < triangles.size(); k += 3)
-    for (size_t e = 0; e < 3; ++e)
-      third[{triangles[k + e], triangles[k + (e + 1) % 3]}] = triangles[k + (e + 2) % 3];
+    for (size_t e = 0; e < 3; ++e) third[{triangles[k + e], triangles[k + (e + 1) % 3]}] = triangles[k + (e + 2) % 3];
   std::vector<uint32_t> out;
   out.reserve(triangles.size() * 2);
   for (size_t k = 0; k + 2 < triangles.size(); k += 3)

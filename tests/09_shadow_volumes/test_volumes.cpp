@@ -55,8 +55,9 @@ TEST(Lab09, Ex09_1_OpenQuadByHand) {
 // The framework's closed meshes: every edge (a, b) has a neighbour whose triangle holds (b, a) and
 // whose third corner is the one named.
 TEST(Lab09, Ex09_1_ClosedMeshesHaveANeighbourOnEveryEdge) {
-  const std::pair<const char*, wb::MeshData> meshes[] = {
-      {"box", wb::makeBox(glm::vec3(0.5f))}, {"sphere", wb::makeSphere(0.5f, 16, 8)}, {"torus", wb::makeTorus(0.6f, 0.2f)}};
+  const std::pair<const char*, wb::MeshData> meshes[] = {{"box", wb::makeBox(glm::vec3(0.5f))},
+                                                         {"sphere", wb::makeSphere(0.5f, 16, 8)},
+                                                         {"torus", wb::makeTorus(0.6f, 0.2f)}};
   for (const auto& [name, mesh] : meshes) {
     const auto& t = mesh.weldedIndices;
     std::map<std::pair<uint32_t, uint32_t>, uint32_t> third;
@@ -87,12 +88,12 @@ TEST_F(GlTest, Ex09_2_FacesLightAndSilhouetteOnSyntheticTriangles) {
   // IN(0): the light; IN(1): the neighbour's far corner. result.x = facesLight of the triangle,
   // result.y = silhouetteEdge of its edge (0,0,0) -> (1,0,0).
   const std::vector<glm::vec4> in = {
-      {0, 0, 2, 1},  {0.5f, -1, -1, 0},   // point light in front; neighbour continues the plane's lit side
-      {0, 0, 2, 1},  {0.5f, 1, 0.1f, 0},  // folded back over the triangle: faces away
-      {0, 0, 1, 0},  {0.5f, -1, 0, 0},    // directional, flat neighbour: faces the light too
-      {0, 0, -2, 1}, {0.5f, -1, 0, 0},    // light behind: the triangle faces away
-      {0, 0, 2, 1},  {0, 1, 0, 0},        // an open edge: the triangle's own third corner
-      {3, 3, 0.5f, 1}, {0.5f, -1, 0, 0},  // a light low over the plane, still in front
+      {0, 0, 2, 1},    {0.5f, -1, -1, 0},   // point light in front; neighbour continues the plane's lit side
+      {0, 0, 2, 1},    {0.5f, 1, 0.1f, 0},  // folded back over the triangle: faces away
+      {0, 0, 1, 0},    {0.5f, -1, 0, 0},    // directional, flat neighbour: faces the light too
+      {0, 0, -2, 1},   {0.5f, -1, 0, 0},    // light behind: the triangle faces away
+      {0, 0, 2, 1},    {0, 1, 0, 0},        // an open edge: the triangle's own third corner
+      {3, 3, 0.5f, 1}, {0.5f, -1, 0, 0},    // a light low over the plane, still in front
   };
   const float wantFaces[] = {1, 1, 1, 0, 1, 1};
   const float wantSilhouette[] = {0, 1, 0, -1, 1, 0};  // -1: not asked (the triangle faces away)
@@ -116,7 +117,7 @@ TEST_F(GlTest, Ex09_2_FacesLightAndSilhouetteOnSyntheticTriangles) {
 TEST_F(GlTest, Ex09_3_ExtrudesAwayFromTheLightToInfinity) {
   // (point, light) pairs: two point lights, two directional ones (xyz towards the light).
   const std::vector<glm::vec4> in = {{1, 0, 0, 0}, {0, 0, 0, 1}, {2, 3, -1, 0}, {-1, 4, 0, 1},
-                                     {0, 1, 0, 0}, {0, 1, 0, 0}, {1, 1, 1, 0}, {0.6f, 0.8f, 0, 0}};
+                                     {0, 1, 0, 0}, {0, 1, 0, 0}, {1, 1, 1, 0},  {0.6f, 0.8f, 0, 0}};
   std::vector<glm::vec4> got;
   WB_RUN_GLSL(got, "09.3", "result = extrudeToInfinity(IN(0).xyz, IN(1));", 4, 2, in);
   for (size_t k = 0; k < 4; ++k) {
@@ -140,8 +141,10 @@ TEST(Lab09, Ex09_4_ZPassCountsFacesInFrontOfTheScene) {
                                                        << "volume: +1, wrapping (GL_INCR_WRAP)";
   EXPECT_EQ(s.back.depthPass, unsigned(GL_DECR_WRAP)) << "WRONG: a back face in front of the scene leaves it: -1, "
                                                       << "wrapping (GL_DECR_WRAP)";
-  for (auto [op, what] : {std::pair{s.front.stencilFail, "front, stencil fail"}, {s.front.depthFail, "front, depth fail"},
-                          {s.back.stencilFail, "back, stencil fail"}, {s.back.depthFail, "back, depth fail"}})
+  for (auto [op, what] : {std::pair{s.front.stencilFail, "front, stencil fail"},
+                          {s.front.depthFail, "front, depth fail"},
+                          {s.back.stencilFail, "back, stencil fail"},
+                          {s.back.depthFail, "back, depth fail"}})
     EXPECT_EQ(op, unsigned(GL_KEEP)) << "WRONG: z-pass counts only faces that pass the depth test (" << what << ")";
   EXPECT_FALSE(s.caps) << "WRONG: z-pass needs no caps: a ray from the eye enters and leaves through the sides";
 }
@@ -151,8 +154,10 @@ TEST(Lab09, Ex09_5_ZFailCountsFacesBehindTheSceneWithCaps) {
   WB_TRY_EXERCISE(s = lab09::zFailSetup());
   EXPECT_EQ(s.back.depthFail, unsigned(GL_INCR_WRAP)) << "WRONG: a back face behind the scene: +1, wrapping";
   EXPECT_EQ(s.front.depthFail, unsigned(GL_DECR_WRAP)) << "WRONG: a front face behind the scene: -1, wrapping";
-  for (auto [op, what] : {std::pair{s.front.stencilFail, "front, stencil fail"}, {s.front.depthPass, "front, depth pass"},
-                          {s.back.stencilFail, "back, stencil fail"}, {s.back.depthPass, "back, depth pass"}})
+  for (auto [op, what] : {std::pair{s.front.stencilFail, "front, stencil fail"},
+                          {s.front.depthPass, "front, depth pass"},
+                          {s.back.stencilFail, "back, stencil fail"},
+                          {s.back.depthPass, "back, depth pass"}})
     EXPECT_EQ(op, unsigned(GL_KEEP)) << "WRONG: z-fail counts only faces that fail the depth test (" << what << ")";
   EXPECT_TRUE(s.caps) << "WRONG: z-fail counts behind the scene, out to infinity: the volumes must be closed there "
                       << "(caps), or a ray that leaves through the missing cap is never counted";
@@ -200,9 +205,15 @@ const std::vector<std::string> kOverview = wb::test::labArgs({});
 const std::vector<std::string> kInside = wb::test::labArgs({"camera.bookmark=3"});
 }  // namespace
 
-TEST(Lab09, Ex09_1_SceneCasters) { wb::test::expectSceneMatchesGolden("09.1", "casters", kOverview, kTol, kMaxFraction); }
-TEST(Lab09, Ex09_2_SceneCasters) { wb::test::expectSceneMatchesGolden("09.2", "casters", kOverview, kTol, kMaxFraction); }
-TEST(Lab09, Ex09_3_SceneCasters) { wb::test::expectSceneMatchesGolden("09.3", "casters", kOverview, kTol, kMaxFraction); }
+TEST(Lab09, Ex09_1_SceneCasters) {
+  wb::test::expectSceneMatchesGolden("09.1", "casters", kOverview, kTol, kMaxFraction);
+}
+TEST(Lab09, Ex09_2_SceneCasters) {
+  wb::test::expectSceneMatchesGolden("09.2", "casters", kOverview, kTol, kMaxFraction);
+}
+TEST(Lab09, Ex09_3_SceneCasters) {
+  wb::test::expectSceneMatchesGolden("09.3", "casters", kOverview, kTol, kMaxFraction);
+}
 TEST(Lab09, Ex09_4_SceneCastersZPass) {
   wb::test::expectSceneMatchesGolden("09.4", "casters", wb::test::labArgs({"volume.method=zpass"}), kTol, kMaxFraction);
 }
@@ -210,19 +221,23 @@ TEST(Lab09, Ex09_5_SceneInsideZFail) {
   wb::test::expectSceneMatchesGolden("09.5", "inside", wb::test::labArgs({"camera.bookmark=3", "volume.method=zfail"}),
                                      kTol, kMaxFraction);
 }
-TEST(Lab09, Ex09_6_SceneInsideAuto) { wb::test::expectSceneMatchesGolden("09.6", "inside", kInside, kTol, kMaxFraction); }
+TEST(Lab09, Ex09_6_SceneInsideAuto) {
+  wb::test::expectSceneMatchesGolden("09.6", "inside", kInside, kTol, kMaxFraction);
+}
 
 // Exact per pixel: against a ray from every light-facing pixel to the light, the volumes disagree only
 // where a silhouette's rasterisation and the ray differ (the solution: 0.005% at 480x270).
 TEST(Lab09, Ex09_2_MeasuredExactAgainstRays) {
   const auto m = wb::test::measureScene("09.2", "measure_casters", kOverview);
   if (!m.failure.empty()) FAIL() << m.failure;
-  EXPECT_LT(m.acnePercent + m.leakPercent, 0.2) << "WRONG: lit pixels drawn shadowed " << m.acnePercent
-                                                << "%, shadowed ones drawn lit " << m.leakPercent << "%";
+  EXPECT_LT(m.acnePercent + m.leakPercent, 0.2)
+      << "WRONG: lit pixels drawn shadowed " << m.acnePercent << "%, shadowed ones drawn lit " << m.leakPercent << "%";
 }
 TEST(Lab09, Ex09_5_MeasuredExactWithTheCameraInside) {
-  const auto m = wb::test::measureScene("09.5", "measure_inside", wb::test::labArgs({"camera.bookmark=3", "volume.method=zfail"}));
+  const auto m =
+      wb::test::measureScene("09.5", "measure_inside", wb::test::labArgs({"camera.bookmark=3", "volume.method=zfail"}));
   if (!m.failure.empty()) FAIL() << m.failure;
-  EXPECT_LT(m.acnePercent + m.leakPercent, 0.2) << "WRONG: with the camera inside a volume, lit pixels drawn shadowed "
-                                                << m.acnePercent << "%, shadowed ones drawn lit " << m.leakPercent << "%";
+  EXPECT_LT(m.acnePercent + m.leakPercent, 0.2)
+      << "WRONG: with the camera inside a volume, lit pixels drawn shadowed " << m.acnePercent
+      << "%, shadowed ones drawn lit " << m.leakPercent << "%";
 }

@@ -1,8 +1,8 @@
-// Welded meshes for lab 09's shadow volumes: every procedural mesh keeps welded positions beside its
-// per-face vertices, closed shapes weld to closed, consistently oriented manifolds, and a
-// GL_TRIANGLES_ADJACENCY buffer built from the welded data reaches a geometry shader through
-// GpuScene, with depth clamp on request. Building adjacency is exercise 09.1, so the framework has
-// no builder: the small one here is the test's own.
+// Instructor-only (tests/reference is not exported): its adjacency and silhouette helpers answer
+// exercises 09.1 and 09.2. Welded meshes for lab 09's shadow volumes: every procedural mesh keeps
+// welded positions beside its per-face vertices, closed shapes weld to closed, consistently oriented
+// manifolds, and a GL_TRIANGLES_ADJACENCY buffer built from the welded data reaches a geometry shader
+// through GpuScene, with depth clamp on request.
 #include "common/error.hpp"
 #include "common/mesh.hpp"
 #include "common/scene.hpp"
