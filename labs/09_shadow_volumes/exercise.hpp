@@ -20,13 +20,16 @@ std::vector<uint32_t> buildAdjacency(const std::vector<uint32_t>& triangles);
 /// stencil test fails (`stencilFail`), when it passes and the depth test fails (`depthFail`), and
 /// when both pass (`depthPass`). GL enums: GL_KEEP, GL_INCR_WRAP, GL_DECR_WRAP, ...
 struct StencilOps {
-  uint32_t stencilFail = 0, depthFail = 0, depthPass = 0;
+  uint32_t stencilFail = 0;  ///< the stencil test fails
+  uint32_t depthFail = 0;    ///< the stencil test passes and the depth test fails
+  uint32_t depthPass = 0;    ///< both pass
 };
 /// How the volumes are counted: the operations for front and back faces, and whether the volumes
 /// need their caps (the light-facing triangles, and the same pushed to infinity).
 struct StencilSetup {
-  StencilOps front, back;
-  bool caps = false;
+  StencilOps front;   ///< for the volume's faces that face the camera
+  StencilOps back;    ///< for those that face away from it
+  bool caps = false;  ///< close the volumes at both ends (the light-facing triangles, and at infinity)
 };
 
 /// EXERCISE 09.4: depth-pass (z-pass) counting: +1 where a front face of a volume is in front of the
