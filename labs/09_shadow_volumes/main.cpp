@@ -67,10 +67,12 @@ class VolumeLab : public wb::Lab {
     wb::LightView shown;
     shown.light = light;
     showLight(shown);  // no map: the measurement casts its rays to this light
+    // Every C++ exercise is called every frame, whatever the others do: the grader records each one.
     std::vector<uint32_t> zpass, zfail;
-    const bool counted = attempt("09.4", zpass, [] { return packed(lab09::zPassSetup()); }) &&
-                         attempt("09.5", zfail, [] { return packed(lab09::zFailSetup()); });
-    const bool ready = adjacent_ && counted && implemented("09.2") && implemented("09.3");
+    const bool zpassOk = attempt("09.4", zpass, [] { return packed(lab09::zPassSetup()); });
+    const bool zfailOk = attempt("09.5", zfail, [] { return packed(lab09::zFailSetup()); });
+    const std::vector<bool> useZFail = countingPerCaster(l);
+    const bool ready = adjacent_ && zpassOk && zfailOk && implemented("09.2") && implemented("09.3");
     if (technique == 1) return renderShadowMapped(light, l);
 
     // PASS 1: the scene's depth, lit by the ambient term only (visibility 0).
@@ -90,7 +92,7 @@ class VolumeLab : public wb::Lab {
       glEnable(GL_STENCIL_TEST);
       glStencilFunc(GL_ALWAYS, 0, 0xFF);
       glDisable(GL_CULL_FACE);
-      drawVolumes(l, zpass, zfail);
+      drawVolumes(l, zpass, zfail, useZFail);
       glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     }
 
@@ -183,23 +185,31 @@ class VolumeLab : public wb::Lab {
     glDepthFunc(GL_LESS);
   }
 
-  // Every caster's volume, counted by z-pass or z-fail: the setting, or per caster by 09.6.
-  void drawVolumes(const glm::vec4& l, const std::vector<uint32_t>& zpass, const std::vector<uint32_t>& zfail) {
+  // Per object, whether its volume is counted by z-fail: the setting, or with `auto` 09.6's answer
+  // for its bounding box.
+  std::vector<bool> countingPerCaster(const glm::vec4& l) {
+    const std::array<glm::vec3, 4> quad = nearQuad();
+    std::vector<bool> zfail(scene.objects.size(), method == 2);
+    for (size_t k = 0; k < scene.objects.size() && method == 0; ++k) {
+      if (!scene.objects[k].castsVolume) continue;
+      const auto [lo, hi] = worldBounds(scene.objects[k]);
+      bool inside = true;  // (a failed call leaves the safe answer)
+      attempt("09.6", inside, [&] { return lab09::nearPlaneMayBeShadowed(quad, l, lo, hi); });
+      zfail[k] = inside;
+    }
+    return zfail;
+  }
+
+  // Every caster's volume, counted by z-pass or z-fail as `useZFail` says.
+  void drawVolumes(const glm::vec4& l, const std::vector<uint32_t>& zpass, const std::vector<uint32_t>& zfail,
+                   const std::vector<bool>& useZFail) {
     const wb::Program& p = *volumeProgram;
     p.use();
     p.set("u_viewProj", viewProj());
     p.set("u_light", l);
-    const std::array<glm::vec3, 4> quad = nearQuad();
-    zfailCasters = 0;
     for (size_t k = 0; k < scene.objects.size(); ++k) {
       if (!scene.objects[k].castsVolume) continue;
-      bool useZFail = method == 2;
-      if (method == 0) {
-        const auto [lo, hi] = worldBounds(scene.objects[k]);
-        attempt("09.6", useZFail, [&] { return lab09::nearPlaneMayBeShadowed(quad, l, lo, hi); });
-      }
-      const std::vector<uint32_t>& s = useZFail ? zfail : zpass;
-      zfailCasters += useZFail;
+      const std::vector<uint32_t>& s = useZFail[k] ? zfail : zpass;
       glStencilOpSeparate(GL_FRONT, s[0], s[1], s[2]);
       glStencilOpSeparate(GL_BACK, s[3], s[4], s[5]);
       p.set("u_caps", int(s[6]));
@@ -282,7 +292,6 @@ class VolumeLab : public wb::Lab {
   int threads = 0;        // every core
   bool adjacent_ = true;  // 09.1 gave every caster its adjacency
   int method = 0;         // auto
-  int zfailCasters = 0;   // this frame's casters counted by z-fail
   bool showVolumes = false, showSilhouettes = false, showCounts = false;
 };
 
