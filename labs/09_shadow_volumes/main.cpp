@@ -45,6 +45,11 @@ class VolumeLab : public wb::Lab {
                  "facesLight(vec3(0.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec4(0.0, 0.0, 1.0, 0.0)) + "
                  "silhouetteEdge(vec3(0.0), vec3(1.0, 0.0, 0.0), vec3(0.0, -1.0, 0.0), vec4(0.0, 0.0, 1.0, 0.0))");
     glslExercise("09.3", "exercise.glsl", "extrudeToInfinity(vec3(1.0), vec4(0.0, 2.0, 0.0, 1.0)).x");
+    int leafy = 0;  // alpha-tested objects: their triangles' outline is not their leaves'
+    for (const auto& o : scene.objects) leafy += !o.castsVolume && !o.material.texture.empty();
+    if (leafy)
+      warn(std::to_string(leafy) + " alpha-tested object(s) cast no shadow volume: a volume follows triangles, and "
+           "their leaves are holes in the texture, not in the triangles");
     for (size_t k = 0; k < scene.objects.size(); ++k) {
       const wb::SceneObject& o = scene.objects[k];
       if (!o.castsVolume) continue;
