@@ -34,7 +34,7 @@ for n in 8 16 32 64 128; do
   # Columns: technique, then the passes (depth, volumes, lighting, shadow_map), then frame_ms.
   awk -F, -v n="$n" 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i }
     NR == 2 { vf = $col["frame_ms"]; vp = $col["volumes_gpu_ms"] }
-    NR == 3 { printf "%d,%d,%s,%s,%s,%s\n", n, 9 * n * (n / 2) * 2, vf, vp, $col["frame_ms"], $col["shadow_map_gpu_ms"] }' \
+    NR == 3 { printf "%d,%d,%s,%s,%s,%s\n", n, 9 * (n * n - 2 * n), vf, vp, $col["frame_ms"], $col["shadow_map_gpu_ms"] }' \
     "$tmp/row.csv" >> "$out/tessellation.csv"
 done
 {
