@@ -1,0 +1,115 @@
+// Lab 10: cascaded shadow maps
+// ---------------------------------------------------------------------------------------------
+// Difficulty: 4/5. Handout: README.md beside this file.
+// Exercises:  10.1 - 10.4 in exercise.cpp; 10.5 and 10.6 in shaders/exercise.glsl.
+// Controls:   drag to orbit, wheel to zoom, 1-9 camera bookmarks, F12 screenshot.
+// One map over a 200 m field spends its texels evenly, so the bench at your feet gets as few as the
+// trees on the horizon. Cascades cut the view into slices, near ones short and far ones long, and give
+// each slice a map of its own: resolution where the camera needs it.
+#include "common/lab.hpp"
+#include "exercise.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <string>
+
+namespace {
+
+class CascadeLab : public wb::Lab {
+ public:
+  CascadeLab() : Lab("scenes/csm_field.json") {
+    settings.add("csm.cascades", count, 1, 4, "how many cascades (map layers)");
+    settings.addChoice("csm.split", scheme, {"uniform", "logarithmic", "practical"}, "how the view is cut (10.1)");
+    settings.add("csm.lambda", lambda, 0.0f, 1.0f, "practical: the logarithmic share");
+    settings.addChoice("csm.stable", stable, {"off", "on"}, "on: sphere fit and whole texels (10.4); off: crop (10.3)");
+    settings.addChoice("csm.select", select, {"interval", "map"}, "choose the cascade by view depth or by map (10.5)");
+    settings.add("csm.blend", band, 0.0f, 0.5f, "the blend band before each split, a share of the cascade (10.6)");
+    settings.add("csm.shadow_distance", shadowFar, 10.0f, 400.0f, "the view distance the cascades cover");
+    settings.add("debug.cascades", showCascades, "tint each cascade: red, green, blue, yellow");
+    settings.assign("shadow.map_size=1024");
+    useDepthBias(0.002f);
+    useLightFaces();
+  }
+
+ protected:
+  void init() override {
+    depthProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/depth.vert"}, {GL_FRAGMENT_SHADER, "wb/depth.frag"}});
+    sceneProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/scene.vert"}, {GL_FRAGMENT_SHADER, "scene.frag"}});
+    glslExercise("10.5", "exercise.glsl", "float(cascadeByInterval(1.0, vec4(2.0), 4))");
+    glslExercise("10.6", "exercise.glsl", "blendWeight(1.0, 0.0, 2.0, 0.1)");
+    attempt("10.1", [] { lab10::splitDistances(1, 10, 2, lab10::SplitScheme::Uniform, 0); });
+  }
+
+  void render() override {
+    const wb::Light& light = scene.lights[size_t(lightIndex)];
+    const float nearPlane = camera.nearPlane;
+    std::vector<float> splits;
+    bool ready = attempt("10.1", splits, [&] {
+      return lab10::splitDistances(nearPlane, shadowFar, count, lab10::SplitScheme(scheme), lambda);
+    });
+    ready = ready && splits.size() == size_t(count) + 1;
+    std::vector<glm::mat4> cascades(size_t(count), glm::mat4(1));
+    const glm::mat4 lightView = glm::lookAt(glm::vec3(0), light.direction, upFor(light.direction));
+    for (int i = 0; i < count && ready; ++i) {
+      std::array<glm::vec3, 8> corners{};
+      ready = attempt("10.2", corners, [&] {
+                return lab10::sliceCorners(glm::inverse(camera.view()), glm::radians(camera.pose.fov), aspect(),
+                                           splits[size_t(i)], splits[size_t(i) + 1]);
+              }) &&
+              ready;
+      const float reach = 0.5f * glm::length(scene.boundsMax - scene.boundsMin);
+      ready = (stable ? attempt("10.4", cascades[size_t(i)],
+                                [&] { return lab10::stableCascade(lightView, corners, shadowMapSize(), reach); })
+                      : attempt("10.3", cascades[size_t(i)],
+                                [&] { return lab10::fitCascade(lightView, corners, reach); })) &&
+              ready;
+    }
+    maps.resize(shadowMapSize(), count);
+
+    // PASS 1: one depth layer per cascade.
+    if (ready) {
+      auto timer = timePass("shadow");
+      renderShadowMap(*depthProgram, maps, light, cascades);
+    }
+
+    // PASS 2: the camera's view; each pixel picks its cascade (10.5) and blends at the splits (10.6).
+    auto timer = timePass("lighting");
+    const wb::Program& p = *sceneProgram;
+    beginCameraPass(p, cascades[0], 0);
+    glBindTextureUnit(1, maps.texture());
+    p.set("u_ready", ready ? 1 : 0);
+    p.set("u_count", count);
+    for (int i = 0; i < 4; ++i) {
+      p.set(("u_cascades[" + std::to_string(i) + "]").c_str(), cascades[size_t(std::min(i, count - 1))]);
+      p.set(("u_splits[" + std::to_string(i) + "]").c_str(), ready ? splits[size_t(std::min(i, count - 1)) + 1] : 1e9f);
+      p.set(("u_splitNear[" + std::to_string(i) + "]").c_str(), ready ? splits[size_t(std::min(i, count - 1))] : 0.0f);
+    }
+    p.set("u_view", camera.view());
+    p.set("u_select", select);
+    p.set("u_band", band);
+    p.set("u_bias", depthBias());
+    p.set("u_lightDir", light.direction);
+    p.set("u_tint", showCascades ? 1 : 0);
+    gpuScene->draw(p);
+  }
+
+ private:
+  static glm::vec3 upFor(const glm::vec3& d) { return std::abs(d.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0); }
+  float aspect() const { return float(frameSize().x) / float(std::max(1, frameSize().y)); }
+
+  wb::Program* depthProgram = nullptr;  // PASS 1
+  wb::Program* sceneProgram = nullptr;  // PASS 2
+  wb::ShadowMapArray maps;
+  int count = 3;           // cascades
+  int scheme = 2;          // practical
+  float lambda = 0.75f;    // between seed 000's 0.6 and the common 0.95
+  int stable = 1;          // on
+  int select = 0;          // interval
+  float band = 0.1f;       // 10% blend band
+  float shadowFar = 120;   // metres
+  bool showCascades = false;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) { return wb::run<CascadeLab>(argc, argv); }

@@ -1,0 +1,60 @@
+#version 450 core
+// PASS 2 of lab 10: each pixel picks its cascade (10.5), looks it up with 2x2 PCF, and in the band
+// before a split blends with the next cascade (10.6).
+#include "exercise.glsl"
+#include "wb/lighting.glsl"
+#include "wb/outputs.glsl"
+in vec3 v_world;
+in vec3 v_normal;
+in vec2 v_uv;
+uniform vec3 u_color;
+uniform sampler2D u_albedo;
+uniform int u_hasTexture;
+uniform float u_alphaCutoff;
+layout(binding = 1) uniform sampler2DArray u_maps;
+uniform mat4 u_cascades[4];
+uniform float u_splits[4];     // the far end of each cascade (view distance)
+uniform float u_splitNear[4];  // the near end
+uniform mat4 u_view;
+uniform int u_count, u_select, u_ready, u_tint;
+uniform float u_band, u_bias;
+uniform vec3 u_lightDir;
+
+// The lit share of cascade i's 2x2 texel neighbourhood (bilinear weights), or 1 outside its map.
+float lookup(int i, vec3 world) {
+  vec4 c = u_cascades[i] * vec4(world, 1.0);
+  vec3 p = c.xyz / c.w * 0.5 + 0.5;
+  if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return 1.0;
+  vec2 size = vec2(textureSize(u_maps, 0).xy), t = p.xy * size - 0.5, f = fract(t);
+  ivec2 base = ivec2(floor(t));
+  float lit[4];
+  for (int k = 0; k < 4; ++k) {
+    ivec2 q = clamp(base + ivec2(k & 1, k >> 1), ivec2(0), ivec2(size) - 1);
+    lit[k] = p.z - u_bias <= texelFetch(u_maps, ivec3(q, i), 0).r ? 1.0 : 0.0;
+  }
+  return mix(mix(lit[0], lit[1], f.x), mix(lit[2], lit[3], f.x), f.y);
+}
+
+void main() {
+  vec4 texel = u_hasTexture != 0 ? texture(u_albedo, v_uv) : vec4(1.0);
+  if (texel.a < u_alphaCutoff) discard;
+  vec3 albedo = u_color * texel.rgb;
+  vec3 n = normalize(v_normal);
+  if (!gl_FrontFacing) n = -n;
+  vec3 toLight = -u_lightDir;
+  bool facesLight = dot(n, toLight) > 0.0;
+  float depth = -(u_view * vec4(v_world, 1.0)).z;
+  vec4 splits = vec4(u_splits[0], u_splits[1], u_splits[2], u_splits[3]);
+  int i = u_select == 0 ? cascadeByInterval(depth, splits, u_count) : cascadeByMap(v_world, u_cascades, u_count);
+  float w = i + 1 < u_count ? blendWeight(depth, u_splitNear[i], u_splits[i], u_band) : 0.0;
+  if (u_ready == 0 || i < 0 || wbIsTodo(w)) {  // a stub: show it, never fake a shadow
+    wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
+    return;
+  }
+  float visibility = lookup(i, v_world);
+  if (w > 0.0) visibility = mix(visibility, lookup(i + 1, v_world), w);
+  vec3 colour = wbShade(albedo, n, toLight, vec3(1.0), visibility);
+  const vec3 tints[4] = vec3[4](vec3(1.0, 0.35, 0.35), vec3(0.35, 1.0, 0.35), vec3(0.35, 0.5, 1.0), vec3(1.0, 1.0, 0.3));
+  if (u_tint != 0) colour *= mix(tints[i], tints[min(i + 1, 3)], w);
+  wbWriteOutputs(colour, visibility, v_world, facesLight);
+}
