@@ -57,6 +57,19 @@ json encode(const std::vector<glm::vec4>& v) {
 
 json encode(const std::vector<uint32_t>& v) { return json(v); }
 
+json encode(const std::vector<float>& v) {
+  json j = json::array();
+  for (float f : v) j.push_back(bits(f));
+  return j;
+}
+
+json encode(const std::array<glm::vec3, 8>& v) {
+  json j = json::array();
+  for (const auto& e : v)
+    for (int k = 0; k < 3; ++k) j.push_back(bits(e[k]));
+  return j;
+}
+
 template <>
 float decode<float>(const json& j) {
   return fromBits(j.get<uint32_t>());
@@ -122,6 +135,19 @@ std::vector<uint32_t> decode<std::vector<uint32_t>>(const json& j) {
     if (!e.is_number_unsigned()) throw Error("a recorded index list holds something that is not an index");
     v.push_back(e.get<uint32_t>());
   }
+  return v;
+}
+
+template <>
+std::vector<float> decode<std::vector<float>>(const json& j) {
+  return floatsOf(j, 0);
+}
+
+template <>
+std::array<glm::vec3, 8> decode<std::array<glm::vec3, 8>>(const json& j) {
+  const auto f = floatsOf(j, 24);
+  std::array<glm::vec3, 8> v;
+  for (size_t k = 0; k < 8; ++k) v[k] = {f[3 * k], f[3 * k + 1], f[3 * k + 2]};
   return v;
 }
 

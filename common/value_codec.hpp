@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -22,6 +23,8 @@ nlohmann::json encode(const glm::dvec2& v);              ///< its doubles' bits
 nlohmann::json encode(const glm::mat4& v);               ///< column by column
 nlohmann::json encode(const std::vector<glm::vec4>& v);  ///< every float's bits, in order
 nlohmann::json encode(const std::vector<uint32_t>& v);   ///< as they are (indices, GL enums)
+nlohmann::json encode(const std::vector<float>& v);      ///< every float's bits, in order
+nlohmann::json encode(const std::array<glm::vec3, 8>& v);  ///< every float's bits, corner by corner
 /// Decodes what encode() wrote; throws wb::Error on malformed data.
 template <class T>
 T decode(const nlohmann::json& j);
