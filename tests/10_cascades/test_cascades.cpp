@@ -95,12 +95,13 @@ TEST(Lab10, Ex10_3_CropMapsTheSliceOntoTheMap) {
 // texel every time); the radius is rounded up to 1/16.
 TEST(Lab10, Ex10_4_SphereAndWholeTexels) {
   const int size = 1024;
-  const auto slice = boxCorners({-1, -0.5f, -4}, {1, 0.5f, -2});  // centre (0, 0, -3), radius sqrt(1 + 0.25 + 1) = 1.5
+  // Centre (0, 0, -3), radius sqrt(1 + 0.25 + 0.81) = 1.4353, which rounds up to 23/16 = 1.4375.
+  const auto slice = boxCorners({-1, -0.5f, -3.9f}, {1, 0.5f, -2.1f});
   glm::mat4 m(1);
   WB_TRY_EXERCISE(m = WB_CALL(lab10::stableCascade(glm::mat4(1), slice, size, 0)));
-  EXPECT_NEAR(1 / m[0][0], 1.5, 1e-4) << "WRONG: the box is the sphere's: half-width = radius = 1.5 (already a multiple "
-                                      << "of 1/16)";
-  EXPECT_NEAR(1 / m[1][1], 1.5, 1e-4) << "WRONG: the box is square";
+  EXPECT_NEAR(1 / m[0][0], 1.4375, 1e-4) << "WRONG: the box is the sphere's: half-width = the radius 1.4353 rounded up "
+                                         << "to a multiple of 1/16, 1.4375";
+  EXPECT_NEAR(1 / m[1][1], 1.4375, 1e-4) << "WRONG: the box is square";
   // Turned by 30 degrees about the slice's centre: the same sphere, the same scale.
   std::array<glm::vec3, 8> turned;
   const glm::mat4 turn = glm::translate(glm::mat4(1), {0, 0, -3}) * glm::rotate(glm::mat4(1), glm::radians(30.0f), {0, 1, 0}) *
@@ -114,7 +115,7 @@ TEST(Lab10, Ex10_4_SphereAndWholeTexels) {
   WB_TRY_EXERCISE(t = WB_CALL(lab10::stableCascade(glm::mat4(1), small, size, 0)));
   EXPECT_NEAR(1 / t[0][0], 17.0 / 16, 1e-4) << "WRONG: the radius 1.039 rounded up to a multiple of 1/16 is 1.0625";
   // Slid by 0.3 texel, and by 2.3: the light-space origin stays on a whole texel.
-  const float texel = 2 * 1.5f / size;
+  const float texel = 2 * 1.4375f / size;
   for (float slide : {0.0f, 0.3f, 2.3f}) {
     std::array<glm::vec3, 8> moved;
     for (size_t k = 0; k < 8; ++k) moved[k] = slice[k] + glm::vec3(slide * texel, 0.7f * slide * texel, 0);
