@@ -166,3 +166,27 @@ TEST_F(GlTest, Ex10_6_BlendWeightsAtTheBandsEdges) {
     EXPECT_NEAR(got[k].x, want[k], 1e-5) << "WRONG: the next cascade's weight at view depth " << in[k].x
                                          << " (cascade from 10 to 30, band 0.1: from 28 to 30)";
 }
+
+// --- Layer 2 ------------------------------------------------------------------------------------------
+namespace {
+const float kTol = 0.1f;
+const double kMaxFraction = 0.01;
+}  // namespace
+
+TEST(Lab10, Ex10_1_SceneField) { wb::test::expectSceneMatchesGolden("10.1", "field", wb::test::labArgs({}), kTol, kMaxFraction); }
+TEST(Lab10, Ex10_2_SceneField) { wb::test::expectSceneMatchesGolden("10.2", "field", wb::test::labArgs({}), kTol, kMaxFraction); }
+TEST(Lab10, Ex10_3_SceneFieldCropped) {
+  wb::test::expectSceneMatchesGolden("10.3", "field_crop", wb::test::labArgs({"csm.stable=off"}), kTol, kMaxFraction);
+}
+// Every cascade count, stabilised: the goldens field_1 .. field_4.
+TEST(Lab10, Ex10_4_SceneEachCascadeCount) {
+  for (int n = 1; n <= 4; ++n)
+    wb::test::expectSceneMatchesGolden("10.4", "field_" + std::to_string(n),
+                                       wb::test::labArgs({"csm.cascades=" + std::to_string(n)}), kTol, kMaxFraction);
+}
+TEST(Lab10, Ex10_5_SceneFieldByMap) {
+  wb::test::expectSceneMatchesGolden("10.5", "field_by_map", wb::test::labArgs({"csm.select=map"}), kTol, kMaxFraction);
+}
+TEST(Lab10, Ex10_6_SceneFieldWideBand) {
+  wb::test::expectSceneMatchesGolden("10.6", "field_band", wb::test::labArgs({"csm.blend=0.4"}), kTol, kMaxFraction);
+}
