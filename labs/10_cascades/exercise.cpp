@@ -27,16 +27,17 @@ std::array<glm::vec3, 8> sliceCorners([[maybe_unused]] const glm::mat4& invView,
 }
 
 // EXERCISE 10.3
-glm::mat4 fitCascade([[maybe_unused]] const glm::mat4& lightView, [[maybe_unused]] const std::array<glm::vec3, 8>& corners,
-                     [[maybe_unused]] float casterReach) {
+glm::mat4 fitCascade([[maybe_unused]] const glm::mat4& lightView,
+                     [[maybe_unused]] const std::array<glm::vec3, 8>& corners, [[maybe_unused]] float casterReach) {
   throw wb::NotImplemented("10.3 fitCascade");
   // Hints: take the corners to light space and find their bounds; glm::ortho(left, right, bottom,
   // top, zNear, zFar) measures zNear and zFar as distances in front of the light (-z).
 }
 
 // EXERCISE 10.4
-glm::mat4 stableCascade([[maybe_unused]] const glm::mat4& lightView, [[maybe_unused]] const std::array<glm::vec3, 8>& corners,
-                        [[maybe_unused]] int mapSize, [[maybe_unused]] float casterReach) {
+glm::mat4 stableCascade([[maybe_unused]] const glm::mat4& lightView,
+                        [[maybe_unused]] const std::array<glm::vec3, 8>& corners, [[maybe_unused]] int mapSize,
+                        [[maybe_unused]] float casterReach) {
   throw wb::NotImplemented("10.4 stableCascade");
   // Hints: centre and radius first (round the radius up: std::ceil(r * 16) / 16); in light space, one
   // texel is 2 * radius / mapSize wide: floor the centre's x and y to a multiple of it.

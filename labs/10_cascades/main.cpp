@@ -28,6 +28,12 @@ class CascadeLab : public wb::Lab {
     settings.add("csm.blend", band, 0.0f, 0.5f, "the blend band before each split, a share of the cascade (10.6)");
     settings.add("csm.shadow_distance", shadowFar, 10.0f, 400.0f, "the view distance the cascades cover");
     settings.add("debug.cascades", showCascades, "tint each cascade: red, green, blue, yellow");
+    settings.add("path.step", pathStep, 0, 10000,
+                 "0: the camera as you move it; k: step k of the fixed path from bookmark 1 (a slow dolly, a "
+                 "sub-texel strafe, a small turn)");
+    settings.add("path.matrices_step", matricesStep, -1, 10000,
+                 "-1: the cascades follow the camera; k: they are built for path step k (shimmer: render step k "
+                 "with step k - 1's cascades and compare)");
     settings.assign("shadow.map_size=1024");
     useDepthBias(0.002f);
     useLightFaces();
@@ -45,8 +51,11 @@ class CascadeLab : public wb::Lab {
   }
 
   void render() override {
+    if (pathStep > 0) camera.pose = poseAt(pathStep);
+    wb::OrbitCamera fitted = camera;  // the camera the cascades are built for
+    if (matricesStep >= 0) fitted.pose = poseAt(matricesStep);
     const wb::Light& light = scene.lights[size_t(lightIndex)];
-    const float nearPlane = camera.nearPlane;
+    const float nearPlane = fitted.nearPlane;
     std::vector<float> splits;
     bool ready = attempt("10.1", splits, [&] {
       return lab10::splitDistances(nearPlane, shadowFar, count, lab10::SplitScheme(scheme), lambda);
@@ -56,10 +65,11 @@ class CascadeLab : public wb::Lab {
     const glm::mat4 lightView = glm::lookAt(glm::vec3(0), light.direction, upFor(light.direction));
     for (int i = 0; i < count && ready; ++i) {
       std::array<glm::vec3, 8> corners{};
-      ready = attempt("10.2", corners, [&] {
-                return lab10::sliceCorners(glm::inverse(camera.view()), glm::radians(camera.pose.fov), aspect(),
-                                           splits[size_t(i)], splits[size_t(i) + 1]);
-              }) &&
+      ready = attempt("10.2", corners,
+                      [&] {
+                        return lab10::sliceCorners(glm::inverse(fitted.view()), glm::radians(fitted.pose.fov), aspect(),
+                                                   splits[size_t(i)], splits[size_t(i) + 1]);
+                      }) &&
               ready;
       const float reach = 0.5f * glm::length(scene.boundsMax - scene.boundsMin);
       ready = (stable ? attempt("10.4", cascades[size_t(i)],
@@ -98,20 +108,30 @@ class CascadeLab : public wb::Lab {
   }
 
  private:
+  // Step k of the fixed camera path: from bookmark 1, 4 cm forward, 1.1 cm sideways and 0.03 degrees
+  // round per step (a strafe of a small fraction of a near cascade's texel).
+  wb::CameraBookmark poseAt(int step) const {
+    wb::CameraBookmark p = scene.cameras.front();
+    p.target += float(step) * glm::vec3(0.011f, 0, -0.04f);
+    p.yaw += 0.03f * float(step);
+    return p;
+  }
+
   static glm::vec3 upFor(const glm::vec3& d) { return std::abs(d.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0); }
   float aspect() const { return float(frameSize().x) / float(std::max(1, frameSize().y)); }
 
   wb::Program* depthProgram = nullptr;  // PASS 1
   wb::Program* sceneProgram = nullptr;  // PASS 2
   wb::ShadowMapArray maps;
-  int count = 3;           // cascades
-  int scheme = 2;          // practical
-  float lambda = 0.75f;    // between seed 000's 0.6 and the common 0.95
-  int stable = 1;          // on
-  int select = 0;          // interval
-  float band = 0.1f;       // 10% blend band
-  float shadowFar = 120;   // metres
+  int count = 3;          // cascades
+  int scheme = 2;         // practical
+  float lambda = 0.75f;   // between seed 000's 0.6 and the common 0.95
+  int stable = 1;         // on
+  int select = 0;         // interval
+  float band = 0.1f;      // 10% blend band
+  float shadowFar = 120;  // metres
   bool showCascades = false;
+  int pathStep = 0, matricesStep = -1;
 };
 
 }  // namespace

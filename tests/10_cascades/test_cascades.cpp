@@ -1,6 +1,7 @@
 // Lab 10 tests. Layer 1: the split formulas against values worked out by hand (lambda 0, 0.5 and 1),
 // slice corners of known frusta, the crop matrix mapping the corners onto [-1, 1], texel snapping,
 // selection at the split boundaries and blend weights at the band's edges.
+#include "common/image.hpp"
 #include "exercise.hpp"
 #include "tests/harness/harness.hpp"
 
@@ -54,8 +55,10 @@ TEST(Lab10, Ex10_2_CornersOfKnownFrusta) {
   const glm::mat4 invView = glm::inverse(glm::lookAt(glm::vec3(10, 0, 0), glm::vec3(11, 0, 0), glm::vec3(0, 1, 0)));
   WB_TRY_EXERCISE(got = WB_CALL(lab10::sliceCorners(invView, glm::radians(90.0f), 2, 1, 3)));
   const glm::vec3 moved[2] = {{11, -1, -2}, {13, 3, -6}};  // corner 0 (d 1: x -2, y -1) and corner 7 (d 3: x -6, y 3)
-  EXPECT_NEAR(glm::length(got[0] - moved[0]), 0, 1e-4) << "WRONG: corner 0 with the camera at (10, 0, 0) looking along +x";
-  EXPECT_NEAR(glm::length(got[7] - moved[1]), 0, 1e-4) << "WRONG: corner 7 with the camera at (10, 0, 0) looking along +x";
+  EXPECT_NEAR(glm::length(got[0] - moved[0]), 0, 1e-4)
+      << "WRONG: corner 0 with the camera at (10, 0, 0) looking along +x";
+  EXPECT_NEAR(glm::length(got[7] - moved[1]), 0, 1e-4)
+      << "WRONG: corner 7 with the camera at (10, 0, 0) looking along +x";
 }
 
 // --- 10.3: the crop matrix ---------------------------------------------------------------------------
@@ -104,12 +107,14 @@ TEST(Lab10, Ex10_4_SphereAndWholeTexels) {
   EXPECT_NEAR(1 / m[1][1], 1.4375, 1e-4) << "WRONG: the box is square";
   // Turned by 30 degrees about the slice's centre: the same sphere, the same scale.
   std::array<glm::vec3, 8> turned;
-  const glm::mat4 turn = glm::translate(glm::mat4(1), {0, 0, -3}) * glm::rotate(glm::mat4(1), glm::radians(30.0f), {0, 1, 0}) *
+  const glm::mat4 turn = glm::translate(glm::mat4(1), {0, 0, -3}) *
+                         glm::rotate(glm::mat4(1), glm::radians(30.0f), {0, 1, 0}) *
                          glm::translate(glm::mat4(1), {0, 0, 3});
   for (size_t k = 0; k < 8; ++k) turned[k] = glm::vec3(turn * glm::vec4(slice[k], 1));
   glm::mat4 t(1);
   WB_TRY_EXERCISE(t = WB_CALL(lab10::stableCascade(glm::mat4(1), turned, size, 0)));
-  EXPECT_NEAR(t[0][0], m[0][0], 1e-6) << "WRONG: turning the camera changed the cascade's scale (fit the sphere, not the corners)";
+  EXPECT_NEAR(t[0][0], m[0][0], 1e-6)
+      << "WRONG: turning the camera changed the cascade's scale (fit the sphere, not the corners)";
   // Rounded up: a radius of 1.03 becomes 17/16.
   const auto small = boxCorners({-0.6f, -0.6f, -3.6f}, {0.6f, 0.6f, -2.4f});  // radius sqrt(3 * 0.36) = 1.03923
   WB_TRY_EXERCISE(t = WB_CALL(lab10::stableCascade(glm::mat4(1), small, size, 0)));
@@ -131,7 +136,8 @@ TEST(Lab10, Ex10_4_SphereAndWholeTexels) {
 // --- 10.5 and 10.6: selection and blending -----------------------------------------------------------
 // Splits at 10, 30, 60, 100: a depth exactly on a split belongs to the next cascade.
 TEST_F(GlTest, Ex10_5_SelectionAtTheBoundaries) {
-  const std::vector<glm::vec4> in = {{5, 4, 0, 0}, {10, 4, 0, 0}, {29.9f, 4, 0, 0}, {99, 4, 0, 0}, {150, 4, 0, 0}, {80, 3, 0, 0}};
+  const std::vector<glm::vec4> in = {{5, 4, 0, 0},  {10, 4, 0, 0},  {29.9f, 4, 0, 0},
+                                     {99, 4, 0, 0}, {150, 4, 0, 0}, {80, 3, 0, 0}};
   const int want[] = {0, 1, 1, 3, 3, 2};
   std::vector<glm::vec4> got;
   WB_RUN_GLSL(got, "10.5",
@@ -142,7 +148,8 @@ TEST_F(GlTest, Ex10_5_SelectionAtTheBoundaries) {
     EXPECT_EQ(int(got[k].x), want[k]) << "WRONG: by interval, view depth " << in[k].x << ", " << in[k].y
                                       << " cascades, splits 10 30 60 100";
   // By map: cascade i covers |x|, |y|, |z| <= 2^i (nested boxes).
-  const std::vector<glm::vec4> points = {{0.5f, 0, 0, 0}, {1.5f, 0, 0, 0}, {3, 3, 0, 0}, {100, 0, 0, 0}, {0, 0, 1.5f, 0}};
+  const std::vector<glm::vec4> points = {
+      {0.5f, 0, 0, 0}, {1.5f, 0, 0, 0}, {3, 3, 0, 0}, {100, 0, 0, 0}, {0, 0, 1.5f, 0}};
   const int wantMap[] = {0, 1, 2, 3, 1};
   WB_RUN_GLSL(got, "10.5",
               "mat4 m[4] = mat4[4](mat4(1.0), mat4(0.5), mat4(0.25), mat4(0.125));"
@@ -173,8 +180,12 @@ const float kTol = 0.1f;
 const double kMaxFraction = 0.01;
 }  // namespace
 
-TEST(Lab10, Ex10_1_SceneField) { wb::test::expectSceneMatchesGolden("10.1", "field", wb::test::labArgs({}), kTol, kMaxFraction); }
-TEST(Lab10, Ex10_2_SceneField) { wb::test::expectSceneMatchesGolden("10.2", "field", wb::test::labArgs({}), kTol, kMaxFraction); }
+TEST(Lab10, Ex10_1_SceneField) {
+  wb::test::expectSceneMatchesGolden("10.1", "field", wb::test::labArgs({}), kTol, kMaxFraction);
+}
+TEST(Lab10, Ex10_2_SceneField) {
+  wb::test::expectSceneMatchesGolden("10.2", "field", wb::test::labArgs({}), kTol, kMaxFraction);
+}
 TEST(Lab10, Ex10_3_SceneFieldCropped) {
   wb::test::expectSceneMatchesGolden("10.3", "field_crop", wb::test::labArgs({"csm.stable=off"}), kTol, kMaxFraction);
 }
@@ -189,4 +200,45 @@ TEST(Lab10, Ex10_5_SceneFieldByMap) {
 }
 TEST(Lab10, Ex10_6_SceneFieldWideBand) {
   wb::test::expectSceneMatchesGolden("10.6", "field_band", wb::test::labArgs({"csm.blend=0.4"}), kTol, kMaxFraction);
+}
+
+// Shimmer: along the fixed camera path, the share of pixels whose shadow flips when step k is drawn
+// with step k - 1's cascades instead of its own, although nothing in the world moved. Stabilised
+// cascades (a fixed-size box on whole texels) must not flip a pixel; the crop fit must (the solution:
+// 0 pixels stabilised, about 0.2% of the frame cropped, 480x270).
+namespace {
+double flippedPercent(const std::string& id, const std::string& stable, int step, std::string& failure) {
+  const auto dir = wb::test::testOutputDir() / ("shimmer_" + stable + "_" + std::to_string(step));
+  std::filesystem::create_directories(dir);
+  wb::FloatImage frames[2];
+  for (int k = 0; k < 2; ++k) {
+    const auto file = dir / (k ? "previous.pfm" : "own.pfm");
+    std::vector<std::string> args = wb::test::labArgs({"csm.stable=" + stable, "path.step=" + std::to_string(step),
+                                                       "path.matrices_step=" + std::to_string(step - k)});
+    args.insert(args.end(), {"--size", "480x270", "--dump-visibility", file.string()});
+    wb::test::runLabOutput(id, "shimmer_" + stable + std::to_string(step) + (k ? "p" : "o"), args, failure);
+    if (!failure.empty()) return -1;
+    frames[k] = wb::readPfm(file);
+  }
+  size_t flips = 0;
+  for (size_t i = 0; i < frames[0].pixels.size() && i < frames[1].pixels.size(); ++i)
+    flips += (frames[0].pixels[i] >= 0.5f) != (frames[1].pixels[i] >= 0.5f);
+  return 100.0 * double(flips) / double(std::max<size_t>(1, frames[0].pixels.size()));
+}
+}  // namespace
+
+TEST(Lab10, Ex10_4_MeasuredNoShimmerWhenStabilised) {
+  std::string failure;
+  for (int step = 1; step <= 3; ++step) {
+    const double stable = flippedPercent("10.4", "on", step, failure);
+    if (!failure.empty()) FAIL() << failure;
+    const double cropped = flippedPercent("10.4", "off", step, failure);
+    if (!failure.empty()) FAIL() << failure;
+    EXPECT_LT(stable, 0.005) << "WRONG: path step " << step << ": " << stable << "% of the frame flips between lit and "
+                             << "shadowed when the cascades of step " << step - 1
+                             << " are used, although nothing moved "
+                             << "(is the box a fixed size, and its origin on a whole texel?)";
+    EXPECT_GT(cropped, 0.05) << "ERROR: the cropped cascades (csm.stable=off) should shimmer, and flipped only "
+                             << cropped << "% at step " << step << ": the measurement sees nothing";
+  }
 }

@@ -329,6 +329,8 @@ int recordRequestedRuns(const fs::path& requests) {
   return 0;
 }
 
+fs::path testOutputDir() { return outputDir(); }
+
 std::string runLabOutput(const std::string& id, const std::string& name, const std::vector<std::string>& args,
                          std::string& failure) {
   std::string log;

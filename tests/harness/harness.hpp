@@ -87,6 +87,10 @@ std::vector<std::string> labArgs(const std::vector<std::string>& settings, const
 /// WB_PLAN=FILE, wrote) on the tape, under the judge's keys. Returns the exit code for main().
 int recordRequestedRuns(const std::filesystem::path& requests);
 
+/// The folder this test binary writes its outputs to (WB_TEST_OUTPUT_DIR when set), for a test that
+/// names files of its own (--dump-visibility).
+std::filesystem::path testOutputDir();
+
 /// Runs the lab headless for exercise `id` (isolated as in expectSceneMatchesGolden()) with `args`
 /// and returns its output; `failure` is set ("ERROR: …" or "NOT IMPLEMENTED: …") if it did not run.
 std::string runLabOutput(const std::string& id, const std::string& name, const std::vector<std::string>& args,
