@@ -28,6 +28,9 @@ class CascadeLab : public wb::Lab {
     settings.add("csm.blend", band, 0.0f, 0.5f, "the blend band before each split, a share of the cascade (10.6)");
     settings.add("csm.shadow_distance", shadowFar, 10.0f, 400.0f, "the view distance the cascades cover");
     settings.add("debug.cascades", showCascades, "tint each cascade: red, green, blue, yellow");
+    settings.add("debug.density", showDensity,
+                 "aliasing: colour by shadow-map texels per screen pixel (red many, dark few), and write that "
+                 "number where --dump-visibility writes visibility");
     settings.add("path.step", pathStep, 0, 10000,
                  "0: the camera as you move it; k: step k of the fixed path from bookmark 1 (a slow dolly, a "
                  "sub-texel strafe, a small turn)");
@@ -104,6 +107,7 @@ class CascadeLab : public wb::Lab {
     p.set("u_bias", depthBias());
     p.set("u_lightDir", light.direction);
     p.set("u_tint", showCascades ? 1 : 0);
+    p.set("u_density", showDensity ? 1 : 0);
     gpuScene->draw(p);
   }
 
@@ -130,7 +134,7 @@ class CascadeLab : public wb::Lab {
   int select = 0;         // interval
   float band = 0.1f;      // 10% blend band
   float shadowFar = 120;  // metres
-  bool showCascades = false;
+  bool showCascades = false, showDensity = false;
   int pathStep = 0, matricesStep = -1;
 };
 

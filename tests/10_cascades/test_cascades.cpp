@@ -7,6 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 
@@ -241,4 +242,35 @@ TEST(Lab10, Ex10_4_MeasuredNoShimmerWhenStabilised) {
     EXPECT_GT(cropped, 0.05) << "ERROR: the cropped cascades (csm.stable=off) should shimmer, and flipped only "
                              << cropped << "% at step " << step << ": the measurement sees nothing";
   }
+}
+
+// Aliasing: shadow-map texels per screen pixel (debug.density writes it where the visibility goes).
+// Its spread over the view, the 95th percentile over the 5th, is smallest for logarithmic splits,
+// largest for uniform ones, and practical lies between (the solution at 480x270: 39, 63 and 214).
+namespace {
+double densitySpread(const std::string& scheme, std::string& failure) {
+  const auto file = wb::test::testOutputDir() / ("density_" + scheme + ".pfm");
+  std::vector<std::string> args = wb::test::labArgs({"csm.split=" + scheme, "debug.density=true"});
+  args.insert(args.end(), {"--size", "480x270", "--dump-visibility", file.string()});
+  wb::test::runLabOutput("10.1", "density_" + scheme, args, failure);
+  if (!failure.empty()) return -1;
+  std::vector<float> v;
+  for (float x : wb::readPfm(file).pixels)
+    if (x > 0 && x != 1.0f && x < 1e6f) v.push_back(x);  // 1 exactly: the sky, which the frame clears to 1
+  if (v.size() < 100) return -1;
+  std::sort(v.begin(), v.end());
+  return double(v[v.size() * 95 / 100]) / double(v[v.size() * 5 / 100]);
+}
+}  // namespace
+
+TEST(Lab10, Ex10_1_MeasuredTexelDensityEvenestWhenLogarithmic) {
+  std::string failure;
+  const double uniform = densitySpread("uniform", failure), logarithmic = densitySpread("logarithmic", failure),
+               practical = densitySpread("practical", failure);
+  if (!failure.empty()) FAIL() << failure;
+  ASSERT_GT(uniform, 0) << "ERROR: no texel density was measured";
+  EXPECT_LT(logarithmic, practical) << "WRONG: texels per pixel vary more with logarithmic splits (p95 / p5 = "
+                                    << logarithmic << ") than with practical ones (" << practical << ")";
+  EXPECT_LT(practical, uniform) << "WRONG: texels per pixel vary more with practical splits (p95 / p5 = " << practical
+                                << ") than with uniform ones (" << uniform << ")";
 }

@@ -19,6 +19,7 @@ uniform mat4 u_view;
 uniform int u_count, u_select, u_ready, u_tint;
 uniform float u_band, u_bias;
 uniform vec3 u_lightDir;
+uniform int u_density;  // debug.density: write shadow-map texels per screen pixel instead of visibility
 
 // The lit share of cascade i's 2x2 texel neighbourhood (bilinear weights), or 1 outside its map.
 float lookup(int i, vec3 world) {
@@ -49,6 +50,13 @@ void main() {
   float w = i + 1 < u_count ? blendWeight(depth, u_splitNear[i], u_splits[i], u_band) : 0.0;
   if (u_ready == 0 || i < 0 || wbIsTodo(w)) {  // a stub: show it, never fake a shadow
     wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
+    return;
+  }
+  if (u_density != 0) {  // the aliasing measure: how many texels of cascade i one pixel spans
+    vec4 c = u_cascades[i] * vec4(v_world, 1.0);
+    vec2 t = (c.xy / c.w * 0.5 + 0.5) * vec2(textureSize(u_maps, 0).xy);
+    float texels = max(length(dFdx(t)), length(dFdy(t)));
+    wbWriteOutputs(vec3(clamp(log2(texels) / 8.0 + 0.5, 0.0, 1.0), 0.2, 0.2), texels, v_world, true);
     return;
   }
   float visibility = lookup(i, v_world);
