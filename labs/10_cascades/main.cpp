@@ -94,6 +94,9 @@ class CascadeLab : public wb::Lab {
     const wb::Program& p = *sceneProgram;
     beginCameraPass(p, cascades[0], 0);
     glBindTextureUnit(1, maps.texture());
+    glBindTextureUnit(2, maps.texture());
+    if (!compare.id()) compare = comparingSampler();
+    glBindSampler(2, compare.id());
     p.set("u_ready", ready ? 1 : 0);
     p.set("u_count", count);
     for (int i = 0; i < 4; ++i) {
@@ -109,9 +112,22 @@ class CascadeLab : public wb::Lab {
     p.set("u_tint", showCascades ? 1 : 0);
     p.set("u_density", showDensity ? 1 : 0);
     gpuScene->draw(p);
+    glBindSampler(2, 0);
   }
 
  private:
+  static wb::Sampler comparingSampler() {
+    GLuint id = 0;
+    glCreateSamplers(1, &id);
+    glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glSamplerParameteri(id, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return wb::Sampler(id);
+  }
+
   // Step k of the fixed camera path: from bookmark 1, 4 cm forward, 1.1 cm sideways and 0.03 degrees
   // round per step (a strafe of a small fraction of a near cascade's texel).
   wb::CameraBookmark poseAt(int step) const {
@@ -127,6 +143,7 @@ class CascadeLab : public wb::Lab {
   wb::Program* depthProgram = nullptr;  // PASS 1
   wb::Program* sceneProgram = nullptr;  // PASS 2
   wb::ShadowMapArray maps;
+  wb::Sampler compare;  // 2x2 PCF in the sampler
   int count = 3;          // cascades
   int scheme = 2;         // practical
   float lambda = 0.75f;   // between seed 000's 0.6 and the common 0.95

@@ -12,6 +12,7 @@ uniform sampler2D u_albedo;
 uniform int u_hasTexture;
 uniform float u_alphaCutoff;
 layout(binding = 1) uniform sampler2DArray u_maps;
+layout(binding = 2) uniform sampler2DArrayShadow u_compare;  // the same maps, through a comparing sampler
 uniform mat4 u_cascades[4];
 uniform float u_splits[4];     // the far end of each cascade (view distance)
 uniform float u_splitNear[4];  // the near end
@@ -21,19 +22,13 @@ uniform float u_band, u_bias;
 uniform vec3 u_lightDir;
 uniform int u_density;  // debug.density: write shadow-map texels per screen pixel instead of visibility
 
-// The lit share of cascade i's 2x2 texel neighbourhood (bilinear weights), or 1 outside its map.
+// The lit share of cascade i's 2x2 texel neighbourhood (the sampler's bilinear comparison, 2x2 PCF),
+// or 1 outside its map.
 float lookup(int i, vec3 world) {
   vec4 c = u_cascades[i] * vec4(world, 1.0);
   vec3 p = c.xyz / c.w * 0.5 + 0.5;
   if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return 1.0;
-  vec2 size = vec2(textureSize(u_maps, 0).xy), t = p.xy * size - 0.5, f = fract(t);
-  ivec2 base = ivec2(floor(t));
-  float lit[4];
-  for (int k = 0; k < 4; ++k) {
-    ivec2 q = clamp(base + ivec2(k & 1, k >> 1), ivec2(0), ivec2(size) - 1);
-    lit[k] = p.z - u_bias <= texelFetch(u_maps, ivec3(q, i), 0).r ? 1.0 : 0.0;
-  }
-  return mix(mix(lit[0], lit[1], f.x), mix(lit[2], lit[3], f.x), f.y);
+  return texture(u_compare, vec4(p.xy, float(i), p.z - u_bias));
 }
 
 void main() {
