@@ -64,10 +64,18 @@ class CascadeLab : public wb::Lab {
       return lab10::splitDistances(nearPlane, shadowFar, count, lab10::SplitScheme(scheme), lambda);
     });
     ready = ready && splits.size() == size_t(count) + 1;
+    // While 10.1 is missing, placeholder distances (never drawn) still let 10.2 - 10.4 run, so that each
+    // exercise is called every frame: the grader records every one from the lab's own run.
+    if (!ready) {
+      splits.clear();
+      for (int i = 0; i <= count; ++i) splits.push_back(nearPlane + float(i));
+    }
     std::vector<glm::mat4> cascades(size_t(count), glm::mat4(1));
     const glm::mat4 lightView = glm::lookAt(glm::vec3(0), light.direction, upFor(light.direction));
-    for (int i = 0; i < count && ready; ++i) {
+    for (int i = 0; i < count; ++i) {
       std::array<glm::vec3, 8> corners{};
+      for (int k = 0; k < 8; ++k)  // placeholder corners (never drawn) if 10.2 is missing
+        corners[size_t(k)] = fitted.pose.target + glm::vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
       ready = attempt("10.2", corners,
                       [&] {
                         return lab10::sliceCorners(glm::inverse(fitted.view()), glm::radians(fitted.pose.fov), aspect(),
@@ -75,11 +83,13 @@ class CascadeLab : public wb::Lab {
                       }) &&
               ready;
       const float reach = 0.5f * glm::length(scene.boundsMax - scene.boundsMin);
-      ready = (stable ? attempt("10.4", cascades[size_t(i)],
-                                [&] { return lab10::stableCascade(lightView, corners, shadowMapSize(), reach); })
-                      : attempt("10.3", cascades[size_t(i)],
-                                [&] { return lab10::fitCascade(lightView, corners, reach); })) &&
-              ready;
+      // Both fits every frame (the grader records each from the lab's own run); csm.stable picks one.
+      glm::mat4 cropped(1), stabilised(1);
+      const bool crop = attempt("10.3", cropped, [&] { return lab10::fitCascade(lightView, corners, reach); });
+      const bool sphere =
+          attempt("10.4", stabilised, [&] { return lab10::stableCascade(lightView, corners, shadowMapSize(), reach); });
+      cascades[size_t(i)] = stable ? stabilised : cropped;
+      ready = (stable ? sphere : crop) && ready;
     }
     maps.resize(shadowMapSize(), count);
 
@@ -143,7 +153,7 @@ class CascadeLab : public wb::Lab {
   wb::Program* depthProgram = nullptr;  // PASS 1
   wb::Program* sceneProgram = nullptr;  // PASS 2
   wb::ShadowMapArray maps;
-  wb::Sampler compare;  // 2x2 PCF in the sampler
+  wb::Sampler compare;    // 2x2 PCF in the sampler
   int count = 3;          // cascades
   int scheme = 2;         // practical
   float lambda = 0.75f;   // between seed 000's 0.6 and the common 0.95
