@@ -48,6 +48,12 @@ const ExerciseStatus* ExerciseBoard::next() const {
   return nullptr;
 }
 
+ExerciseState ExerciseBoard::stateOf(const std::string& id) const {
+  for (const auto& e : exercises_)
+    if (e.id == id) return e.state;
+  return ExerciseState::Unknown;
+}
+
 void ExerciseBoard::set(const std::string& id, ExerciseState state, const std::string& message) {
   for (auto& e : exercises_)
     if (e.id == id) e.state = state, e.message = message;

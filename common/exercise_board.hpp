@@ -44,6 +44,8 @@ class ExerciseBoard {
   const ExerciseStatus* next() const;
   /// Every exercise in manifest order.
   const std::vector<ExerciseStatus>& exercises() const { return exercises_; }
+  /// The state of exercise `id` (ExerciseState::Unknown for an id the manifest does not list).
+  ExerciseState stateOf(const std::string& id) const;
   /// Records an exercise's state; unknown ids are ignored.
   void set(const std::string& id, ExerciseState state, const std::string& message);
 

@@ -28,6 +28,20 @@ Sampler makePlainSampler() {
   return Sampler(id);
 }
 
+Sampler makeComparisonSampler() {
+  GLuint id = 0;
+  glCreateSamplers(1, &id);
+  glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glSamplerParameteri(id, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+  glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+  const float lit[4] = {1, 1, 1, 1};
+  glSamplerParameterfv(id, GL_TEXTURE_BORDER_COLOR, lit);
+  return Sampler(id);
+}
+
 VertexArray makeEmptyVertexArray() {
   GLuint id = 0;
   glCreateVertexArrays(1, &id);

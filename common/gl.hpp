@@ -66,6 +66,9 @@ Texture makeTexture2D(GLenum internalFormat, int w, int h, GLenum filter = GL_NE
 /// Creates a sampler that reads texels as stored: nearest filtering, clamped to the edge, no depth
 /// comparison (for reading a depth map that may be set up for a shadow sampler).
 Sampler makePlainSampler();
+/// Creates a sampler for a depth-compare lookup (sampler2DShadow and its array form): GL_LEQUAL,
+/// linear filtering (2x2 PCF in hardware), clamped to a border that reads as lit.
+Sampler makeComparisonSampler();
 /// Creates an empty vertex array (for draws whose vertex shader makes its own vertices).
 VertexArray makeEmptyVertexArray();
 /// Creates a buffer with `bytes` of immutable storage, optionally filled from `data`.

@@ -9,6 +9,27 @@
 #include <map>
 
 namespace wb {
+namespace {
+
+// The shadow ray from `p` to `light`: towards a point or spot light, up to its distance; against a
+// directional light's direction, without end.
+struct LightRay {
+  glm::vec3 dir;
+  float tMax;
+};
+LightRay rayToLight(const Light& light, const glm::vec3& p) {
+  if (light.type == LightType::Directional) return {-light.direction, std::numeric_limits<float>::infinity()};
+  const float d = glm::length(light.position - p);
+  return {(light.position - p) / d, d};
+}
+
+// Adds one pixel, `rendered` against `reference`, to `d`.
+void accumulate(ReferenceDifference& d, float rendered, float reference) {
+  const double diff = double(std::clamp(rendered, 0.0f, 1.0f)) - double(reference);
+  ++d.pixels, d.absSum += std::abs(diff), d.lighter += diff > 0.1, d.darker += diff < -0.1;
+}
+
+}  // namespace
 
 FloatImage exactVisibility(const RayScene& rays, const Light& light, int width, int height,
                            const std::vector<glm::vec4>& positions) {
@@ -18,17 +39,11 @@ FloatImage exactVisibility(const RayScene& rays, const Light& light, int width, 
   auto visibility = [&](const glm::vec4& p) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     if (p.w == 0) return nan;  // background
-    glm::vec3 toLight = -light.direction;
-    float tMax = std::numeric_limits<float>::infinity();
-    if (light.type != LightType::Directional) {
-      toLight = light.position - glm::vec3(p);
-      tMax = glm::length(toLight);
-      toLight /= tMax;
-      if (light.type == LightType::Spot && glm::dot(-toLight, light.direction) < cosCone) return nan;
-    }
+    const LightRay ray = rayToLight(light, glm::vec3(p));
+    if (light.type == LightType::Spot && glm::dot(-ray.dir, light.direction) < cosCone) return nan;
     if (p.w < 0) return 0.0f;  // facing away: an attached shadow
     // Start a little way along the ray so the surface does not shadow itself through rounding.
-    return rays.occluded(glm::vec3(p), toLight, 1e-3f, tMax) ? 0.0f : 1.0f;
+    return rays.occluded(glm::vec3(p), ray.dir, 1e-3f, ray.tMax) ? 0.0f : 1.0f;
   };
   forEachRow(height, [&](int y) {
     for (int x = 0; x < width; ++x) {
@@ -59,8 +74,7 @@ ReferenceDifference compareWithReference(const FloatImage& rendered, const std::
   for (size_t i = 0; i < reference.size() && i < rendered.pixels.size(); ++i) {
     const int x = int(i % size_t(rendered.width));
     if (reference[i] < 0 || x < x0 || x >= x1) continue;
-    const double diff = double(std::clamp(rendered.pixels[i], 0.0f, 1.0f)) - double(reference[i]);
-    ++d.pixels, d.absSum += std::abs(diff), d.lighter += diff > 0.1, d.darker += diff < -0.1;
+    accumulate(d, rendered.pixels[i], reference[i]);
   }
   return d;
 }
@@ -101,11 +115,8 @@ FloatImage rayTracedVisibility(const RayScene& rays, const Light& light, const g
           float v = std::numeric_limits<float>::quiet_NaN();
           if (t < far) {
             const glm::vec3 p = from + t * dir;
-            glm::vec3 toLight = -light.direction;
-            float tMax = std::numeric_limits<float>::infinity();
-            if (light.type != LightType::Directional)
-              tMax = glm::length(light.position - p), toLight = (light.position - p) / tMax;
-            v = rays.occluded(p, toLight, 1e-3f, tMax) ? 0.0f : 1.0f;
+            const LightRay ray = rayToLight(light, p);
+            v = rays.occluded(p, ray.dir, 1e-3f, ray.tMax) ? 0.0f : 1.0f;
           }
           out.pixels[size_t(y) * size_t(width) + size_t(x)] = v;
         }
@@ -129,9 +140,8 @@ SeamError cubeSeamError(const FloatImage& rendered, const FloatImage& exact, con
   SeamError e;
   for (size_t i = 0; i < exact.pixels.size() && i < rendered.pixels.size(); ++i) {
     if (std::isnan(exact.pixels[i]) || positions[i].w <= 0) continue;
-    ReferenceDifference& d = degreesFromCubeSeam(glm::vec3(positions[i]) - light) < degrees ? e.seam : e.rest;
-    const double diff = double(std::clamp(rendered.pixels[i], 0.0f, 1.0f)) - double(exact.pixels[i]);
-    ++d.pixels, d.absSum += std::abs(diff), d.lighter += diff > 0.1, d.darker += diff < -0.1;
+    accumulate(degreesFromCubeSeam(glm::vec3(positions[i]) - light) < degrees ? e.seam : e.rest, rendered.pixels[i],
+               exact.pixels[i]);
   }
   return e;
 }
@@ -143,13 +153,10 @@ double contactGapTexels(const FloatImage& rendered, const FloatImage& exact, con
   for (size_t i = 0; i < exact.pixels.size(); ++i) {
     const glm::vec4 p = positions[i];
     if (std::isnan(exact.pixels[i]) || exact.pixels[i] >= 0.5f || p.w <= 0 || std::abs(p.y - groundY) > 1e-3f) continue;
-    glm::vec3 toLight = -light.direction;
-    float tMax = std::numeric_limits<float>::infinity();
-    if (light.type != LightType::Directional)
-      tMax = glm::length(light.position - glm::vec3(p)), toLight = (light.position - glm::vec3(p)) / tMax;
+    const LightRay ray = rayToLight(light, glm::vec3(p));
     int object = -1;
-    const float t = rays.firstHit(glm::vec3(p), toLight, 1e-3f, tMax, &object);
-    const glm::vec3 blocker = glm::vec3(p) + t * toLight;
+    const float t = rays.firstHit(glm::vec3(p), ray.dir, 1e-3f, ray.tMax, &object);
+    const glm::vec3 blocker = glm::vec3(p) + t * ray.dir;
     const size_t bin = size_t(2 * glm::length(glm::vec2(blocker.x - p.x, blocker.z - p.z)) / texelWorld);
     if (!rays.restsOn(object, groundY) || bin >= kBins) continue;
     auto& [shadowed, leaking] = casters[object];

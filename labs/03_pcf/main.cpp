@@ -38,17 +38,7 @@ class PcfLab : public wb::Lab {
     glslExercise("03.4", "exercise.glsl", "pcfPoisson(wb_tex0, vec3(0.5), 16, 1.0, uvec2(0u), 0.0)");
     glslExercise("03.5", "exercise.glsl", "pcfGather(wb_tex0, vec3(0.5), 1, 0.0)");
     // The hardware filter reads the same depth texture through a sampler that compares.
-    GLuint id = 0;
-    glCreateSamplers(1, &id);
-    compareSampler = wb::Sampler(id);
-    glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glSamplerParameteri(id, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-    glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-    const float outside[4] = {1, 1, 1, 1};
-    glSamplerParameterfv(id, GL_TEXTURE_BORDER_COLOR, outside);
+    compareSampler = wb::makeComparisonSampler();
   }
 
   void render() override {

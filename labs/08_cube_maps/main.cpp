@@ -91,7 +91,7 @@ class CubeLab : public wb::Lab {
   // pass; six passes, with a note, when the chosen way cannot run here.
   void fillCube(const wb::Light& light, float far) {
     wb::Program* p = method == 1 ? layeredProgram : method == 2 ? instancedProgram : depthProgram;
-    if (method == 1 && (state("08.3") != wb::ExerciseState::Implemented || !p->ok())) {
+    if (method == 1 && (board().stateOf("08.3") != wb::ExerciseState::Implemented || !p->ok())) {
       warn("cube.method=geometry needs 08.3 (exercise_layered.geom): six passes for now");
       p = depthProgram;
     }
@@ -120,12 +120,6 @@ class CubeLab : public wb::Lab {
       v.cubeOffsets.push_back(radius * glm::vec3(r * std::cos(phi), y, r * std::sin(phi)));
     }
     return v;
-  }
-
-  wb::ExerciseState state(const std::string& id) const {
-    for (const auto& e : board().exercises())
-      if (e.id == id) return e.state;
-    return wb::ExerciseState::Unknown;
   }
 
   // The light: the chosen one if it is a point light, else the scene's first point light.

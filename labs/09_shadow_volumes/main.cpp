@@ -51,6 +51,7 @@ class VolumeLab : public wb::Lab {
       warn(std::to_string(leafy) +
            " alpha-tested object(s) cast no shadow volume: a volume follows triangles, and "
            "their leaves are holes in the texture, not in the triangles");
+    for (const auto& o : scene.objects) bounds.push_back(worldBounds(o));  // the scene does not move
     for (size_t k = 0; k < scene.objects.size(); ++k) {
       const wb::SceneObject& o = scene.objects[k];
       if (!o.castsVolume) continue;
@@ -79,7 +80,8 @@ class VolumeLab : public wb::Lab {
     const bool zpassOk = attempt("09.4", zpass, [] { return packed(lab09::zPassSetup()); });
     const bool zfailOk = attempt("09.5", zfail, [] { return packed(lab09::zFailSetup()); });
     const std::vector<bool> useZFail = countingPerCaster(l);
-    const bool ready = adjacent_ && zpassOk && zfailOk && implemented("09.2") && implemented("09.3");
+    const bool ready = adjacent_ && zpassOk && zfailOk && board().stateOf("09.2") == wb::ExerciseState::Implemented &&
+                       board().stateOf("09.3") == wb::ExerciseState::Implemented;
     if (technique == 1) return renderShadowMapped(light, l);
 
     // PASS 1: the scene's depth, lit by the ambient term only (visibility 0).
@@ -124,12 +126,6 @@ class VolumeLab : public wb::Lab {
             s.back.depthFail,    s.back.depthPass,  s.caps ? 1u : 0u};
   }
 
-  bool implemented(const std::string& id) const {
-    for (const auto& e : board().exercises())
-      if (e.id == id) return e.state == wb::ExerciseState::Implemented;
-    return false;
-  }
-
   void drawScene(const glm::vec4& l, bool lit, bool todo, const glm::mat4& lightViewProj = glm::mat4(1),
                  GLuint shadowMap = 0) {
     const wb::Program& p = *sceneProgram;
@@ -153,24 +149,10 @@ class VolumeLab : public wb::Lab {
       glDisable(GL_POLYGON_OFFSET_FILL);
     }
     auto timer = timePass("lighting");
-    if (!compare.id()) compare = comparisonSampler();
+    if (!compare.id()) compare = wb::makeComparisonSampler();
     glBindSampler(0, compare.id());
     drawScene(l, true, false, lightViewProj, map.texture());
     glBindSampler(0, 0);
-  }
-
-  static wb::Sampler comparisonSampler() {
-    GLuint id = 0;
-    glCreateSamplers(1, &id);
-    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glSamplerParameteri(id, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-    glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-    const float one[4] = {1, 1, 1, 1};
-    glSamplerParameterfv(id, GL_TEXTURE_BORDER_COLOR, one);
-    return wb::Sampler(id);
   }
 
   // The ground truth as a render mode: the CPU casts a ray through every pixel and one to the light
@@ -199,7 +181,7 @@ class VolumeLab : public wb::Lab {
     std::vector<bool> zfail(scene.objects.size(), method == 2);
     for (size_t k = 0; k < scene.objects.size() && method == 0; ++k) {
       if (!scene.objects[k].castsVolume) continue;
-      const auto [lo, hi] = worldBounds(scene.objects[k]);
+      const auto [lo, hi] = bounds[k];
       bool inside = true;  // (a failed call leaves the safe answer)
       attempt("09.6", inside, [&] { return lab09::nearPlaneMayBeShadowed(quad, l, lo, hi); });
       zfail[k] = inside;
@@ -295,10 +277,11 @@ class VolumeLab : public wb::Lab {
   std::unique_ptr<wb::RayScene> rays;    // ray_traced
   wb::Texture traced;                    // ray_traced: the CPU's visibility
   glm::ivec2 tracedSize{0};
-  int technique = 0;      // volumes
-  int threads = 0;        // every core
-  bool adjacent_ = true;  // 09.1 gave every caster its adjacency
-  int method = 0;         // auto
+  int technique = 0;                                    // volumes
+  int threads = 0;                                      // every core
+  std::vector<std::pair<glm::vec3, glm::vec3>> bounds;  // each object's world-space box, for 09.6
+  bool adjacent_ = true;                                // 09.1 gave every caster its adjacency
+  int method = 0;                                       // auto
   bool showVolumes = false, showSilhouettes = false, showCounts = false;
 };
 
