@@ -63,12 +63,25 @@ json encode(const std::vector<float>& v) {
   return j;
 }
 
-json encode(const std::array<glm::vec3, 8>& v) {
+namespace {
+template <size_t N>
+json corners(const std::array<glm::vec3, N>& v) {
   json j = json::array();
   for (const auto& e : v)
     for (int k = 0; k < 3; ++k) j.push_back(bits(e[k]));
   return j;
 }
+template <size_t N>
+std::array<glm::vec3, N> cornersOf(const json& j) {
+  const auto f = floatsOf(j, 3 * N);
+  std::array<glm::vec3, N> v;
+  for (size_t k = 0; k < N; ++k) v[k] = {f[3 * k], f[3 * k + 1], f[3 * k + 2]};
+  return v;
+}
+}  // namespace
+
+json encode(const std::array<glm::vec3, 8>& v) { return corners(v); }
+json encode(const std::array<glm::vec3, 4>& v) { return corners(v); }
 
 template <>
 float decode<float>(const json& j) {
@@ -145,10 +158,11 @@ std::vector<float> decode<std::vector<float>>(const json& j) {
 
 template <>
 std::array<glm::vec3, 8> decode<std::array<glm::vec3, 8>>(const json& j) {
-  const auto f = floatsOf(j, 24);
-  std::array<glm::vec3, 8> v;
-  for (size_t k = 0; k < 8; ++k) v[k] = {f[3 * k], f[3 * k + 1], f[3 * k + 2]};
-  return v;
+  return cornersOf<8>(j);
+}
+template <>
+std::array<glm::vec3, 4> decode<std::array<glm::vec3, 4>>(const json& j) {
+  return cornersOf<4>(j);
 }
 
 }  // namespace wb

@@ -27,6 +27,13 @@ class CascadeLab : public wb::Lab {
     settings.addChoice("csm.select", select, {"interval", "map"}, "choose the cascade by view depth or by map (10.5)");
     settings.add("csm.blend", band, 0.0f, 0.5f, "the blend band before each split, a share of the cascade (10.6)");
     settings.add("csm.shadow_distance", shadowFar, 10.0f, 400.0f, "the view distance the cascades cover");
+    settings.addChoice("csm.kernel", kernel, {"1", "3", "5", "7"},
+                       "PCF taps per side (each a 2x2 comparison), spaced by cascade 0's texel in world units in "
+                       "every cascade, so softness stays the same across the splits");
+    settings.add("csm.freeze", freeze, "keep the cascades (and their slices) where they are while the camera moves");
+    settings.addChoice("measure.region", region, {"all", "c1", "c2", "c3", "c4", "splits", "rest"},
+                       "the pixels --metrics counts: all, one cascade, those within 10% of a cascade's range of an "
+                       "inner split, or the rest (the others are dimmed)");
     settings.add("debug.cascades", showCascades, "tint each cascade: red, green, blue, yellow");
     settings.add("debug.density", showDensity,
                  "aliasing: colour by shadow-map texels per screen pixel (red many, dark few), and write that "
@@ -70,7 +77,7 @@ class CascadeLab : public wb::Lab {
       splits.clear();
       for (int i = 0; i <= count; ++i) splits.push_back(nearPlane + float(i));
     }
-    std::vector<glm::mat4> cascades(size_t(count), glm::mat4(1));
+    std::vector<glm::mat4> cascades(size_t(count), glm::mat4(1)), slices;
     const glm::mat4 lightView = glm::lookAt(glm::vec3(0), light.direction, upFor(light.direction));
     for (int i = 0; i < count; ++i) {
       std::array<glm::vec3, 8> corners{};
@@ -90,13 +97,23 @@ class CascadeLab : public wb::Lab {
           attempt("10.4", stabilised, [&] { return lab10::stableCascade(lightView, corners, shadowMapSize(), reach); });
       cascades[size_t(i)] = stable ? stabilised : cropped;
       ready = (stable ? sphere : crop) && ready;
+      slices.push_back(
+          glm::perspective(glm::radians(fitted.pose.fov), aspect(), splits[size_t(i)], splits[size_t(i) + 1]) *
+          fitted.view());
     }
+    if (freeze && frozen.ready && frozen.cascades.size() == size_t(count))
+      cascades = frozen.cascades, splits = frozen.splits, slices = frozen.slices, ready = true;
+    else
+      frozen = {ready, cascades, splits, slices};
     maps.resize(shadowMapSize(), count);
 
     // PASS 1: one depth layer per cascade.
     if (ready) {
       auto timer = timePass("shadow");
       renderShadowMap(*depthProgram, maps, light, cascades);
+      wb::LightView shown = maps.describe(light, cascades);
+      shown.outlines = slices;  // debug.frustum: each cascade's box, and its slice of the view
+      showLight(shown);
     }
 
     // PASS 2: the camera's view; each pixel picks its cascade (10.5) and blends at the splits (10.6).
@@ -105,12 +122,18 @@ class CascadeLab : public wb::Lab {
     beginCameraPass(p, cascades[0], 0);
     glBindTextureUnit(1, maps.texture());
     glBindTextureUnit(2, maps.texture());
-    if (!compare.id()) compare = comparingSampler();
+    if (!compare.id()) compare = wb::makeComparisonSampler();
     glBindSampler(2, compare.id());
     p.set("u_ready", ready ? 1 : 0);
     p.set("u_count", count);
     for (int i = 0; i < 4; ++i) {
-      p.set(("u_cascades[" + std::to_string(i) + "]").c_str(), cascades[size_t(std::min(i, count - 1))]);
+      const glm::mat4& m = cascades[size_t(std::min(i, count - 1))];
+      // Light clip units per world unit along the map's x and y: the rows of the matrix's 3x3 part.
+      const glm::vec2 scale(glm::length(glm::vec3(m[0][0], m[1][0], m[2][0])),
+                            glm::length(glm::vec3(m[0][1], m[1][1], m[2][1])));
+      p.set(("u_uvPerWorld[" + std::to_string(i) + "]").c_str(), 0.5f * scale);
+      if (i == 0) p.set("u_tapWorld", 2.0f / std::max(1e-6f, scale.x * float(shadowMapSize())));
+      p.set(("u_cascades[" + std::to_string(i) + "]").c_str(), m);
       p.set(("u_splits[" + std::to_string(i) + "]").c_str(), ready ? splits[size_t(std::min(i, count - 1)) + 1] : 1e9f);
       p.set(("u_splitNear[" + std::to_string(i) + "]").c_str(), ready ? splits[size_t(std::min(i, count - 1))] : 0.0f);
     }
@@ -121,23 +144,13 @@ class CascadeLab : public wb::Lab {
     p.set("u_lightDir", light.direction);
     p.set("u_tint", showCascades ? 1 : 0);
     p.set("u_density", showDensity ? 1 : 0);
+    p.set("u_kernel", 2 * kernel + 1);
+    p.set("u_region", region);
     gpuScene->draw(p);
     glBindSampler(2, 0);
   }
 
  private:
-  static wb::Sampler comparingSampler() {
-    GLuint id = 0;
-    glCreateSamplers(1, &id);
-    glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glSamplerParameteri(id, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    return wb::Sampler(id);
-  }
-
   // Step k of the fixed camera path: from bookmark 1, 4 cm forward, 1.1 cm sideways and 0.03 degrees
   // round per step (a strafe of a small fraction of a near cascade's texel).
   wb::CameraBookmark poseAt(int step) const {
@@ -161,7 +174,16 @@ class CascadeLab : public wb::Lab {
   int select = 0;         // interval
   float band = 0.1f;      // 10% blend band
   float shadowFar = 120;  // metres
+  int kernel = 0;         // 1 tap
+  bool freeze = false;
+  int region = 0;  // measure.region: all
   bool showCascades = false, showDensity = false;
+  struct {
+    bool ready = false;
+    std::vector<glm::mat4> cascades;
+    std::vector<float> splits;
+    std::vector<glm::mat4> slices;
+  } frozen;  // the cascades csm.freeze keeps
   int pathStep = 0, matricesStep = -1;
 };
 

@@ -13,6 +13,12 @@
 
 using wb::test::GlTest;
 
+// The held-out tests (instructor-only) call these on inputs of their own, through the grader's plan.
+WB_CALLABLE(lab10::splitDistances);
+WB_CALLABLE(lab10::sliceCorners);
+WB_CALLABLE(lab10::fitCascade);
+WB_CALLABLE(lab10::stableCascade);
+
 // --- 10.1: split distances --------------------------------------------------------------------------
 // near 1, far 100, four cascades. Uniform: 1 + 99 i / 4 = 1, 25.75, 50.5, 75.25, 100. Logarithmic:
 // 100^(i/4) = 1, 3.16228, 10, 31.6228, 100. Practical, lambda 0.5: their means, 14.4561, 30.25, 53.4364.
@@ -207,6 +213,8 @@ TEST(Lab10, Ex10_6_SceneFieldWideBand) {
 // with step k - 1's cascades instead of its own, although nothing in the world moved. Stabilised
 // cascades (a fixed-size box on whole texels) must not flip a pixel; the crop fit must (the solution:
 // 0 pixels stabilised, about 0.2% of the frame cropped, 480x270).
+// Every run is made before any verdict: a grader's runner records them all (it decides nothing,
+// and each of its runs "fails"), and the judge then finds each on the tape.
 namespace {
 double flippedPercent(const std::string& id, const std::string& stable, int step, std::string& failure) {
   const auto dir = wb::test::testOutputDir() / ("shimmer_" + stable + "_" + std::to_string(step));
@@ -217,15 +225,17 @@ double flippedPercent(const std::string& id, const std::string& stable, int step
     std::vector<std::string> args = wb::test::labArgs({"csm.stable=" + stable, "path.step=" + std::to_string(step),
                                                        "path.matrices_step=" + std::to_string(step - k)});
     args.insert(args.end(), {"--size", "480x270", "--dump-visibility", file.string()});
-    wb::test::runLabOutput(id, "shimmer_" + stable + std::to_string(step) + (k ? "p" : "o"), args, failure);
-    if (!failure.empty()) return -1;
+    std::string why;
+    wb::test::runLabOutput(id, "shimmer_" + stable + std::to_string(step) + (k ? "p" : "o"), args, why);
+    if (!why.empty()) {
+      if (failure.empty()) failure = why;
+      continue;
+    }
     frames[k] = wb::readPfm(file);
     for (float x : frames[k].pixels)
-      if (x <= -1e29f) {
-        failure = "NOT IMPLEMENTED: the frame shows the not-implemented placeholder";
-        return -1;
-      }
+      if (x <= -1e29f && failure.empty()) failure = "NOT IMPLEMENTED: the frame shows the not-implemented placeholder";
   }
+  if (!failure.empty()) return -1;
   size_t flips = 0;
   for (size_t i = 0; i < frames[0].pixels.size() && i < frames[1].pixels.size(); ++i)
     flips += (frames[0].pixels[i] >= 0.5f) != (frames[1].pixels[i] >= 0.5f);
@@ -235,17 +245,19 @@ double flippedPercent(const std::string& id, const std::string& stable, int step
 
 TEST(Lab10, Ex10_4_MeasuredNoShimmerWhenStabilised) {
   std::string failure;
+  double stable[4], cropped[4];
   for (int step = 1; step <= 3; ++step) {
-    const double stable = flippedPercent("10.4", "on", step, failure);
-    if (!failure.empty()) FAIL() << failure;
-    const double cropped = flippedPercent("10.4", "off", step, failure);
-    if (!failure.empty()) FAIL() << failure;
-    EXPECT_LT(stable, 0.005) << "WRONG: path step " << step << ": " << stable << "% of the frame flips between lit and "
-                             << "shadowed when the cascades of step " << step - 1
-                             << " are used, although nothing moved "
-                             << "(is the box a fixed size, and its origin on a whole texel?)";
-    EXPECT_GT(cropped, 0.05) << "ERROR: the cropped cascades (csm.stable=off) should shimmer, and flipped only "
-                             << cropped << "% at step " << step << ": the measurement sees nothing";
+    stable[step] = flippedPercent("10.4", "on", step, failure);
+    cropped[step] = flippedPercent("10.4", "off", step, failure);
+  }
+  if (!failure.empty()) FAIL() << failure;
+  for (int step = 1; step <= 3; ++step) {
+    EXPECT_LT(stable[step], 0.005) << "WRONG: path step " << step << ": " << stable[step]
+                                   << "% of the frame flips between lit and shadowed when the cascades of step "
+                                   << step - 1 << " are used, although nothing moved "
+                                   << "(is the box a fixed size, and its origin on a whole texel?)";
+    EXPECT_GT(cropped[step], 0.05) << "ERROR: the cropped cascades (csm.stable=off) should shimmer, and flipped only "
+                                   << cropped[step] << "% at step " << step << ": the measurement sees nothing";
   }
 }
 
@@ -257,12 +269,16 @@ double densitySpread(const std::string& scheme, std::string& failure) {
   const auto file = wb::test::testOutputDir() / ("density_" + scheme + ".pfm");
   std::vector<std::string> args = wb::test::labArgs({"csm.split=" + scheme, "debug.density=true"});
   args.insert(args.end(), {"--size", "480x270", "--dump-visibility", file.string()});
-  wb::test::runLabOutput("10.1", "density_" + scheme, args, failure);
-  if (!failure.empty()) return -1;
+  std::string why;
+  wb::test::runLabOutput("10.1", "density_" + scheme, args, why);
+  if (!why.empty()) {
+    if (failure.empty()) failure = why;
+    return -1;
+  }
   std::vector<float> v;
   for (float x : wb::readPfm(file).pixels) {
     if (x <= -1e29f) {
-      failure = "NOT IMPLEMENTED: the frame shows the not-implemented placeholder";
+      if (failure.empty()) failure = "NOT IMPLEMENTED: the frame shows the not-implemented placeholder";
       return -1;
     }
     if (x > 0 && x != 1.0f && x < 1e6f) v.push_back(x);  // 1 exactly: the sky, which the frame clears to 1

@@ -20,6 +20,10 @@ uniform mat4 u_view;
 uniform int u_count, u_select, u_ready, u_tint;
 uniform float u_band, u_bias;
 uniform vec3 u_lightDir;
+uniform int u_kernel;            // csm.kernel: PCF taps per side
+uniform vec2 u_uvPerWorld[4];    // map coordinates per world unit, along the map's x and y
+uniform float u_tapWorld;        // the tap spacing: cascade 0's texel, in world units
+uniform int u_region;            // measure.region: 0 all, 1-4 one cascade, 5 near the splits, 6 the rest
 uniform int u_density;  // debug.density: write shadow-map texels per screen pixel instead of visibility
 
 // The lit share of cascade i's 2x2 texel neighbourhood (the sampler's bilinear comparison, 2x2 PCF),
@@ -28,7 +32,25 @@ float lookup(int i, vec3 world) {
   vec4 c = u_cascades[i] * vec4(world, 1.0);
   vec3 p = c.xyz / c.w * 0.5 + 0.5;
   if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return 1.0;
-  return texture(u_compare, vec4(p.xy, float(i), p.z - u_bias));
+  vec2 step = u_tapWorld * u_uvPerWorld[i];  // the same world spacing in every cascade
+  float lit = 0.0;
+  int r = u_kernel / 2;
+  for (int y = -r; y <= r; ++y)
+    for (int x = -r; x <= r; ++x) lit += texture(u_compare, vec4(p.xy + vec2(x, y) * step, float(i), p.z - u_bias));
+  return lit / float(u_kernel * u_kernel);
+}
+
+// measure.region: whether --metrics counts this pixel. "Near the splits" is within 10% of the
+// neighbouring cascade's depth range of an inner split, on either side, whatever the blend band.
+bool inRegion(int i, float depth) {
+  if (u_region == 0) return true;
+  if (u_region <= 4) return i == u_region - 1;
+  bool near = false;
+  for (int j = 0; j + 1 < u_count; ++j) {
+    float split = u_splits[j], below = split - u_splitNear[j], above = u_splits[j + 1] - split;
+    near = near || (depth > split - 0.1 * below && depth < split + 0.1 * above);
+  }
+  return near == (u_region == 5);
 }
 
 void main() {
@@ -59,5 +81,6 @@ void main() {
   vec3 colour = wbShade(albedo, n, toLight, vec3(1.0), visibility);
   const vec3 tints[4] = vec3[4](vec3(1.0, 0.35, 0.35), vec3(0.35, 1.0, 0.35), vec3(0.35, 0.5, 1.0), vec3(1.0, 1.0, 0.3));
   if (u_tint != 0) colour *= mix(tints[i], tints[min(i + 1, 3)], w);
-  wbWriteOutputs(colour, visibility, v_world, facesLight);
+  bool counted = inRegion(i, depth);
+  wbWriteOutputs(counted ? colour : colour * 0.25, visibility, v_world, facesLight && counted);
 }
