@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
 
 namespace {
@@ -26,6 +27,9 @@ class CascadeLab : public wb::Lab {
     settings.addChoice("csm.stable", stable, {"off", "on"}, "on: sphere fit and whole texels (10.4); off: crop (10.3)");
     settings.addChoice("csm.select", select, {"interval", "map"}, "choose the cascade by view depth or by map (10.5)");
     settings.add("csm.blend", band, 0.0f, 0.5f, "the blend band before each split, a share of the cascade (10.6)");
+    settings.addChoice("csm.blend_mode", smooth, {"dither", "smooth"},
+                       "in the band: one lookup, the next cascade where the weight beats a per-pixel threshold; "
+                       "or both cascades' lookups, mixed (a second lookup on every pixel on llvmpipe)");
     settings.add("csm.shadow_distance", shadowFar, 10.0f, 400.0f, "the view distance the cascades cover");
     settings.addChoice("csm.kernel", kernel, {"1", "3", "5", "7"},
                        "PCF taps per side (each a 2x2 comparison), spaced by cascade 0's texel in world units in "
@@ -52,7 +56,7 @@ class CascadeLab : public wb::Lab {
  protected:
   void init() override {
     depthProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/depth.vert"}, {GL_FRAGMENT_SHADER, "wb/depth.frag"}});
-    sceneProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/scene.vert"}, {GL_FRAGMENT_SHADER, "scene.frag"}});
+    sceneVariant();  // the defaults' variant now, so a shader error shows at once
     glslExercise("10.5", "exercise.glsl",
                  "cascadeByInterval(1.0, vec4(2.0), 4) < 0 || cascadeByMap(vec3(0.0), mat4[4](mat4(1.0), mat4(1.0), "
                  "mat4(1.0), mat4(1.0)), 4) < 0 ? WB_TODO : 0.0");
@@ -118,7 +122,7 @@ class CascadeLab : public wb::Lab {
 
     // PASS 2: the camera's view; each pixel picks its cascade (10.5) and blends at the splits (10.6).
     auto timer = timePass("lighting");
-    const wb::Program& p = *sceneProgram;
+    const wb::Program& p = sceneVariant();
     beginCameraPass(p, cascades[0], 0);
     glBindTextureUnit(1, maps.texture());
     glBindTextureUnit(2, maps.texture());
@@ -138,12 +142,9 @@ class CascadeLab : public wb::Lab {
       p.set(("u_splitNear[" + std::to_string(i) + "]").c_str(), ready ? splits[size_t(std::min(i, count - 1))] : 0.0f);
     }
     p.set("u_view", camera.view());
-    p.set("u_select", select);
     p.set("u_band", band);
     p.set("u_bias", depthBias());
     p.set("u_lightDir", light.direction);
-    p.set("u_tint", showCascades ? 1 : 0);
-    p.set("u_density", showDensity ? 1 : 0);
     p.set("u_kernel", 2 * kernel + 1);
     p.set("u_region", region);
     gpuScene->draw(p);
@@ -160,11 +161,25 @@ class CascadeLab : public wb::Lab {
     return p;
   }
 
+  // PASS 2's program for the current options: llvmpipe runs both sides of a branch even on a uniform,
+  // so each option is compiled in (scene.frag's #defines), one program per combination, when first used.
+  const wb::Program& sceneVariant() {
+    std::string defines;
+    if (select) defines += "#define WB_SELECT_MAP\n";
+    if (smooth) defines += "#define WB_SMOOTH_BLEND\n";
+    if (showDensity) defines += "#define WB_DENSITY\n";
+    if (showCascades) defines += "#define WB_TINT\n";
+    if (region) defines += "#define WB_REGION\n";
+    wb::Program*& p = scenePrograms[defines];
+    if (!p) p = &loadProgram({{GL_VERTEX_SHADER, "wb/scene.vert"}, {GL_FRAGMENT_SHADER, "scene.frag"}}, defines);
+    return *p;
+  }
+
   static glm::vec3 upFor(const glm::vec3& d) { return std::abs(d.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0); }
   float aspect() const { return float(frameSize().x) / float(std::max(1, frameSize().y)); }
 
-  wb::Program* depthProgram = nullptr;  // PASS 1
-  wb::Program* sceneProgram = nullptr;  // PASS 2
+  wb::Program* depthProgram = nullptr;                // PASS 1
+  std::map<std::string, wb::Program*> scenePrograms;  // PASS 2, by #defines
   wb::ShadowMapArray maps;
   wb::Sampler compare;    // 2x2 PCF in the sampler
   int count = 3;          // cascades
@@ -173,6 +188,7 @@ class CascadeLab : public wb::Lab {
   int stable = 1;         // on
   int select = 0;         // interval
   float band = 0.1f;      // 10% blend band
+  int smooth = 0;         // dithered
   float shadowFar = 120;  // metres
   int kernel = 0;         // 1 tap
   bool freeze = false;

@@ -1,6 +1,8 @@
 #version 450 core
 // PASS 2 of lab 10: each pixel picks its cascade (10.5), looks it up with 2x2 PCF, and in the band
-// before a split blends with the next cascade (10.6).
+// before a split blends with the next cascade (10.6). llvmpipe runs both sides of every branch, even
+// one whose condition is a uniform, so the debug views and options are compiled in by #define
+// (WB_SELECT_MAP, WB_SMOOTH_BLEND, WB_DENSITY, WB_TINT, WB_REGION) instead of switched by uniforms.
 #include "exercise.glsl"
 #include "wb/lighting.glsl"
 #include "wb/outputs.glsl"
@@ -17,14 +19,13 @@ uniform mat4 u_cascades[4];
 uniform float u_splits[4];     // the far end of each cascade (view distance)
 uniform float u_splitNear[4];  // the near end
 uniform mat4 u_view;
-uniform int u_count, u_select, u_ready, u_tint;
+uniform int u_count, u_ready;
 uniform float u_band, u_bias;
 uniform vec3 u_lightDir;
 uniform int u_kernel;            // csm.kernel: PCF taps per side
 uniform vec2 u_uvPerWorld[4];    // map coordinates per world unit, along the map's x and y
 uniform float u_tapWorld;        // the tap spacing: cascade 0's texel, in world units
 uniform int u_region;            // measure.region: 0 all, 1-4 one cascade, 5 near the splits, 6 the rest
-uniform int u_density;  // debug.density: write shadow-map texels per screen pixel instead of visibility
 
 // The lit share of cascade i's 2x2 texel neighbourhood (the sampler's bilinear comparison, 2x2 PCF),
 // or 1 outside its map.
@@ -38,6 +39,11 @@ float lookup(int i, vec3 world) {
   for (int y = -r; y <= r; ++y)
     for (int x = -r; x <= r; ++x) lit += texture(u_compare, vec4(p.xy + vec2(x, y) * step, float(i), p.z - u_bias));
   return lit / float(u_kernel * u_kernel);
+}
+
+// debug.cascades: red, green, blue, yellow.
+vec3 cascadeTint(int i) {
+  return i == 0 ? vec3(1.0, 0.35, 0.35) : i == 1 ? vec3(0.35, 1.0, 0.35) : i == 2 ? vec3(0.35, 0.5, 1.0) : vec3(1.0, 1.0, 0.3);
 }
 
 // measure.region: whether --metrics counts this pixel. "Near the splits" is within 10% of the
@@ -63,24 +69,38 @@ void main() {
   bool facesLight = dot(n, toLight) > 0.0;
   float depth = -(u_view * vec4(v_world, 1.0)).z;
   vec4 splits = vec4(u_splits[0], u_splits[1], u_splits[2], u_splits[3]);
-  int i = u_select == 0 ? cascadeByInterval(depth, splits, u_count) : cascadeByMap(v_world, u_cascades, u_count);
+#ifdef WB_SELECT_MAP
+  int i = cascadeByMap(v_world, u_cascades, u_count);
+#else
+  int i = cascadeByInterval(depth, splits, u_count);
+#endif
   float w = i + 1 < u_count ? blendWeight(depth, u_splitNear[i], u_splits[i], u_band) : 0.0;
   if (u_ready == 0 || i < 0 || wbIsTodo(w)) {  // a stub: show it, never fake a shadow
     wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
     return;
   }
-  if (u_density != 0) {  // the aliasing measure: how many texels of cascade i one pixel spans
-    vec4 c = u_cascades[i] * vec4(v_world, 1.0);
-    vec2 t = (c.xy / c.w * 0.5 + 0.5) * vec2(textureSize(u_maps, 0).xy);
-    float texels = max(length(dFdx(t)), length(dFdy(t)));
-    wbWriteOutputs(vec3(clamp(log2(texels) / 8.0 + 0.5, 0.0, 1.0), 0.2, 0.2), texels, v_world, true);
-    return;
-  }
+#ifdef WB_DENSITY  // the aliasing measure: how many texels of cascade i one pixel spans
+  vec4 c = u_cascades[i] * vec4(v_world, 1.0);
+  vec2 t = (c.xy / c.w * 0.5 + 0.5) * vec2(textureSize(u_maps, 0).xy);
+  float texels = max(length(dFdx(t)), length(dFdy(t)));
+  wbWriteOutputs(vec3(clamp(log2(texels) / 8.0 + 0.5, 0.0, 1.0), 0.2, 0.2), texels, v_world, true);
+#else
+#ifdef WB_SMOOTH_BLEND  // both cascades, mixed
   float visibility = lookup(i, v_world);
   if (w > 0.0) visibility = mix(visibility, lookup(i + 1, v_world), w);
+#else  // dithered: the next cascade where w beats a per-pixel threshold (interleaved gradient noise)
+  float threshold = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+  float visibility = lookup(w > threshold ? i + 1 : i, v_world);
+#endif
   vec3 colour = wbShade(albedo, n, toLight, vec3(1.0), visibility);
-  const vec3 tints[4] = vec3[4](vec3(1.0, 0.35, 0.35), vec3(0.35, 1.0, 0.35), vec3(0.35, 0.5, 1.0), vec3(1.0, 1.0, 0.3));
-  if (u_tint != 0) colour *= mix(tints[i], tints[min(i + 1, 3)], w);
+#ifdef WB_TINT
+  colour *= mix(cascadeTint(i), cascadeTint(min(i + 1, 3)), w);
+#endif
+#ifdef WB_REGION
   bool counted = inRegion(i, depth);
-  wbWriteOutputs(counted ? colour : colour * 0.25, visibility, v_world, facesLight && counted);
+  colour *= counted ? 1.0 : 0.25;
+  facesLight = facesLight && counted;
+#endif
+  wbWriteOutputs(colour, visibility, v_world, facesLight);
+#endif
 }
