@@ -134,7 +134,9 @@ base = ["shadow.map_size=1024", "csm.kernel=1", "csm.blend=0", "csm.select=inter
 rows = [("map 512^2", ["shadow.map_size=512"], 1000 / 158), ("map 1024^2", [], 1000 / 146),
         ("map 2048^2", ["shadow.map_size=2048"], 1000 / 103), ("kernel 3x3", ["csm.kernel=3"], 1000 / 121),
         ("kernel 5x5", ["csm.kernel=5"], 1000 / 86), ("kernel 7x7", ["csm.kernel=7"], 1000 / 61),
-        ("blending (10% band)", ["csm.blend=0.1"], 1000 / 137), ("map-based selection", ["csm.select=map"], 1000 / 143)]
+        ("blending, dithered (10% band)", ["csm.blend=0.1"], 1000 / 137),
+        ("blending, smooth (10% band, two lookups)", ["csm.blend=0.1", "csm.blend_mode=smooth"], 1000 / 137),
+        ("map-based selection", ["csm.select=map"], 1000 / 143)]
 times = {name: [] for name, _, _ in rows}
 with tempfile.TemporaryDirectory() as tmp:
     for r in range(7):
