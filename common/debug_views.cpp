@@ -60,6 +60,11 @@ void DebugViews::drawFrusta(const LightView& light, const glm::mat4& viewer) con
     lines_.set("u_color", layers ? cascade[k % 4] : glm::vec3(1, 0.85f, 0.1f));
     glDrawArrays(GL_LINES, 0, 24);
   }
+  for (size_t k = 0; k < light.outlines.size(); ++k) {
+    lines_.set("u_invLight", glm::inverse(light.outlines[k]));
+    lines_.set("u_color", 0.6f * (layers ? cascade[k % 4] : glm::vec3(1, 0.85f, 0.1f)));
+    glDrawArrays(GL_LINES, 0, 24);
+  }
 }
 
 void DebugViews::drawInset(const LightView& light, glm::ivec2 frame) const {

@@ -112,7 +112,7 @@ void Lab::renderShadowMap(const Program& depthProgram, const ShadowMap& map, con
   map.begin();
   depthProgram.set("u_lightViewProj", lightViewProj);
   depthProgram.set("u_alphaCutoff", alphaCutoff_);
-  gpuScene->draw(depthProgram);
+  gpuScene->drawCasters(depthProgram);
   showLight(map.describe(light, lightViewProj));
 }
 
@@ -122,7 +122,7 @@ void Lab::renderShadowMap(const Program& depthProgram, const CubeShadowMap& map,
   for (int face = 0; face < 6 && face < int(faceViewProj.size()); ++face) {
     map.begin(face);
     depthProgram.set("u_lightViewProj", faceViewProj[size_t(face)]);
-    gpuScene->draw(depthProgram);
+    gpuScene->drawCasters(depthProgram);
   }
   showLight(map.describe(light, faceViewProj, linearDistance));
 }
@@ -133,7 +133,7 @@ void Lab::renderShadowMap(const Program& depthProgram, const ShadowMapArray& map
   for (int layer = 0; layer < map.layers() && layer < int(layerViewProj.size()); ++layer) {
     map.begin(layer);
     depthProgram.set("u_lightViewProj", layerViewProj[size_t(layer)]);
-    gpuScene->draw(depthProgram);
+    gpuScene->drawCasters(depthProgram);
   }
   showLight(map.describe(light, layerViewProj));
 }
@@ -145,7 +145,7 @@ void Lab::renderFilteredShadowMap(const Program& writer, FilteredShadowMap& map,
     map.begin(far);
     writer.set("u_lightViewProj", lightViewProj);
     writer.set("u_alphaCutoff", alphaCutoff_);
-    gpuScene->draw(writer);
+    gpuScene->drawCasters(writer);
   }
   {
     auto timer = timePass("prefilter");

@@ -27,6 +27,9 @@ struct LightView {
   /// along p − light), and the depth bias each test subtracts from |p − light|.
   std::vector<glm::vec3> cubeOffsets;
   float cubeBias = 0;  ///< see cubeOffsets
+  /// More boxes for debug.frustum, world → clip like viewProj (a cascade's slice of the view), drawn
+  /// fainter in the colour of the matrix with the same index.
+  std::vector<glm::mat4> outlines;
 
   /// True when a shadow map was rendered this frame.
   bool hasMap() const { return texture != 0 && !viewProj.empty(); }

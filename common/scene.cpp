@@ -126,7 +126,8 @@ void readObject(const json& entry, size_t i, const fs::path& file, const fs::pat
     return;
   }
   // An alpha-tested object has no closed outline to cast a volume from; the default follows that.
-  scene.objects.push_back({name, shapeMesh(shape, f), model, mat, f.flag("casts_volume", mat.texture.empty())});
+  scene.objects.push_back({name, shapeMesh(shape, f), model, mat, f.flag("casts_volume", mat.texture.empty()),
+                           f.flag("casts_shadow", true)});
 }
 
 Light readLight(const json& entry, size_t i, const fs::path& file) {
@@ -264,14 +265,23 @@ GpuScene::GpuScene(const Scene& scene) {
       }
       tex = it->second;
     }
-    items_.push_back({Mesh(o.mesh), o.model, o.material.color, tex, tex != white_.id()});
+    items_.push_back({Mesh(o.mesh), o.model, o.material.color, tex, tex != white_.id(), o.castsShadow});
   }
 }
 
 void GpuScene::draw(const Program& program, int unit, int instances) const {
+  drawItems(program, unit, instances, false);
+}
+
+void GpuScene::drawCasters(const Program& program, int unit, int instances) const {
+  drawItems(program, unit, instances, true);
+}
+
+void GpuScene::drawItems(const Program& program, int unit, int instances, bool castersOnly) const {
   program.use();
   program.set("u_albedo", unit);
   for (const auto& it : items_) {
+    if (castersOnly && !it.casts) continue;
     program.set("u_model", it.model);
     program.set("u_color", it.color);
     program.set("u_hasTexture", it.textured ? 1 : 0);

@@ -29,6 +29,10 @@ struct SceneObject {
   /// Casts a stencil shadow volume (lab 09; file field "casts_volume", default true unless the object
   /// is textured: an alpha-tested outline is not its triangles' outline).
   bool castsVolume = true;
+  /// Drawn into the shadow maps by the framework's shadow passes (file field "casts_shadow", default
+  /// true). A receiver that cannot shade anything, such as a ground that everything stands on, may
+  /// say false: the maps then skip its texels (lab 10's field fills three cascades otherwise).
+  bool castsShadow = true;
 };
 
 /// The kinds of light a scene can hold.
@@ -87,6 +91,8 @@ class GpuScene {
   /// replaced by a leaf texture half-way through the draw. Each object is drawn `instances` times
   /// (lab 08 draws six, one per cube face, and picks the face from gl_InstanceID).
   void draw(const Program& program, int textureUnit = kAlbedoUnit, int instances = 1) const;
+  /// draw(), but only the objects that cast shadows (SceneObject::castsShadow): the shadow passes.
+  void drawCasters(const Program& program, int textureUnit = kAlbedoUnit, int instances = 1) const;
   static constexpr int kAlbedoUnit = 15;  ///< GL 4.5 guarantees 16 texture units per stage
 
   /// Number of objects; object i is objects[i] of the Scene this was built from.
@@ -107,12 +113,14 @@ class GpuScene {
   void drawObjectWelded(size_t object, const Program& program, bool depthClamp = false) const;
 
  private:
+  void drawItems(const Program& program, int unit, int instances, bool castersOnly) const;
   struct Item {
     Mesh mesh;
     glm::mat4 model;
     glm::vec3 color;
     GLuint texture;
     bool textured;
+    bool casts;
   };
   std::vector<Item> items_;
   std::vector<Texture> textures_;

@@ -57,6 +57,32 @@ json encode(const std::vector<glm::vec4>& v) {
 
 json encode(const std::vector<uint32_t>& v) { return json(v); }
 
+json encode(const std::vector<float>& v) {
+  json j = json::array();
+  for (float f : v) j.push_back(bits(f));
+  return j;
+}
+
+namespace {
+template <size_t N>
+json corners(const std::array<glm::vec3, N>& v) {
+  json j = json::array();
+  for (const auto& e : v)
+    for (int k = 0; k < 3; ++k) j.push_back(bits(e[k]));
+  return j;
+}
+template <size_t N>
+std::array<glm::vec3, N> cornersOf(const json& j) {
+  const auto f = floatsOf(j, 3 * N);
+  std::array<glm::vec3, N> v;
+  for (size_t k = 0; k < N; ++k) v[k] = {f[3 * k], f[3 * k + 1], f[3 * k + 2]};
+  return v;
+}
+}  // namespace
+
+json encode(const std::array<glm::vec3, 8>& v) { return corners(v); }
+json encode(const std::array<glm::vec3, 4>& v) { return corners(v); }
+
 template <>
 float decode<float>(const json& j) {
   return fromBits(j.get<uint32_t>());
@@ -123,6 +149,20 @@ std::vector<uint32_t> decode<std::vector<uint32_t>>(const json& j) {
     v.push_back(e.get<uint32_t>());
   }
   return v;
+}
+
+template <>
+std::vector<float> decode<std::vector<float>>(const json& j) {
+  return floatsOf(j, 0);
+}
+
+template <>
+std::array<glm::vec3, 8> decode<std::array<glm::vec3, 8>>(const json& j) {
+  return cornersOf<8>(j);
+}
+template <>
+std::array<glm::vec3, 4> decode<std::array<glm::vec3, 4>>(const json& j) {
+  return cornersOf<4>(j);
 }
 
 }  // namespace wb

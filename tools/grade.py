@@ -684,8 +684,8 @@ class Grader:
         return not failures, failures, out
 
     def plan(self, judge, gfilter, judged, env, tape, uid):
-        """The judge's planning pass over held-out tests: the lab runs (JSON lines {key, args}) the
-        runner must record, written into its tape folder as requests.jsonl, with each input file of
+        """The judge's planning pass over held-out tests: the lab runs (JSON lines {key, args}) and the
+        calls of C++ exercises on held-out inputs ({key, call, inputs}) the runner must record, written into its tape folder as requests.jsonl, with each input file of
         the instructor's (a held-out scene) copied beside it, since the runner cannot read them."""
         plan = judged / "plan.jsonl"
         (judged / "empty").mkdir()
@@ -694,7 +694,7 @@ class Grader:
         inputs, lines = tape / "inputs", []
         for line in plan.read_text().splitlines() if plan.exists() else []:
             request = json.loads(line)
-            for k, arg in enumerate(request["args"]):
+            for k, arg in enumerate(request.get("args", [])):  # (a call request has inputs, no files)
                 path = Path(arg)
                 if path.is_absolute() and path.is_file() and ROOT in path.parents:
                     inputs.mkdir(exist_ok=True)
@@ -726,9 +726,12 @@ class Grader:
         return ok, failures, kept, hidden_result, has_hidden
 
     def grade_alone(self, lab, e, mine, tests):
-        """Grades C++ exercise `e` with only its own chunk from `mine` (the stubs for the others)."""
+        """Grades C++ exercise `e` with only its own chunk from `mine`, and those of the exercises it
+        takes its inputs from ("uses" in the manifest: the judge replays those too), the stubs for the
+        others."""
         stub = ROOT / "labs" / lab["name"] / "exercise.cpp"
-        hybrid = keep_only_chunks(mine, stub.read_text(), {e["id"]}, self.ws.lab_dir(lab["name"]) / "exercise.cpp") \
+        keep = {e["id"], *e.get("uses", [])}
+        hybrid = keep_only_chunks(mine, stub.read_text(), keep, self.ws.lab_dir(lab["name"]) / "exercise.cpp") \
             if stub.exists() and chunk(mine, e["id"]) else None
         if hybrid is None:
             return None

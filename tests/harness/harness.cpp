@@ -222,14 +222,32 @@ static nlohmann::json recordRun(const std::string& key, const fs::path& out, con
   return run;
 }
 
-// Keeps only exercise `id`'s calls in a recorded --record-exercises file: the judge's app replays
-// the graded exercise and runs its own code for the others.
-static bool keepOnlyCalls(const fs::path& file, const std::string& id) {
+// The exercises whose results exercise `id` takes as its inputs in the lab ("uses" in the trusted
+// manifest, labs/NN/exercises.json): 10.3 fits the slices that 10.1 and 10.2 computed.
+static std::vector<std::string> exerciseUses(const std::string& id) {
+  try {
+    const auto manifest = nlohmann::json::parse(readFile(fs::path(variant::kLabDir) / "exercises.json"));
+    for (const auto& e : manifest.at("exercises"))
+      if (e.at("id") == id) return e.value("uses", std::vector<std::string>{});
+  } catch (const std::exception&) {
+  }
+  return {};
+}
+
+// Keeps only exercise `id`'s calls, and those of the exercises it uses, in a recorded
+// --record-exercises file: the judge's app replays them and runs its own code for the others. The
+// used exercises' calls alone go to `upstream` (removed when there are none), for the reference
+// render: so a mistake in 10.2 is judged in 10.2, and 10.3 on the corners it was given.
+static bool keepOnlyCalls(const fs::path& file, const std::string& id, const fs::path& upstream) {
+  fs::remove(upstream);
   try {
     const auto all = nlohmann::json::parse(readFile(file));
-    nlohmann::json calls = nlohmann::json::object();
+    nlohmann::json calls = nlohmann::json::object(), used = nlohmann::json::object();
     if (all.at("calls").contains(id)) calls[id] = all.at("calls").at(id);
+    for (const std::string& u : exerciseUses(id))
+      if (all.at("calls").contains(u)) calls[u] = used[u] = all.at("calls").at(u);
     std::ofstream(file) << nlohmann::json{{"calls", calls}}.dump();
+    if (!used.empty()) std::ofstream(upstream) << nlohmann::json{{"calls", used}}.dump();
     return calls.contains(id);
   } catch (const std::exception&) {
     return false;
@@ -243,12 +261,12 @@ static bool keepOnlyCalls(const fs::path& file, const std::string& id) {
 // the app run {"code", "log", "command"}, or throws wb::Error with what went wrong.
 static nlohmann::json drawExercise(const std::string& id, const fs::path& out, const std::vector<std::string>& args) {
   const std::string key = nextObservationKey();
+  fs::remove(out / "upstream.json");
   if (tapeMode() == TapeMode::Direct) return runDirect(id, out, args);
   const bool glsl = !glslExerciseFile(id).empty();
-  if (const char* plan = std::getenv("WB_PLAN"); plan && *plan && tapeMode() == TapeMode::Replay) {
+  if (planning()) {
     // A judge's planning pass (held-out tests, which no runner has): the runs a runner must record.
-    if (!glsl)
-      std::ofstream(plan, std::ios::app) << nlohmann::json{{"key", key}, {"args", runnerArgs(args)}}.dump() << "\n";
+    if (!glsl) planRequest({{"key", key}, {"args", runnerArgs(args)}});
     throw Error("planned");
   }
   if (glsl && tapeMode() == TapeMode::Record) throw Error("recorded for the judge");
@@ -257,7 +275,7 @@ static nlohmann::json drawExercise(const std::string& id, const fs::path& out, c
   const fs::path calls = out / "exercises.json";
   if (tapeMode() == TapeMode::Record) throw Error("recorded for the judge");
   if (mine.value("code", 128) != 0) return mine;  // the student's app failed: that is the result
-  if (!fs::exists(calls) || !keepOnlyCalls(calls, id))
+  if (!fs::exists(calls) || !keepOnlyCalls(calls, id, out / "upstream.json"))
     throw Error("your lab never ran exercise " + id + " in this scene (its run left no result):\n" +
                 mine.value("log", std::string()));
   return runAppJson(out, "WB_STRICT_GL=1 " + isolatedGlsl(id, out), trustedExe(),
@@ -321,13 +339,25 @@ int recordRequestedRuns(const fs::path& requests) {
   int k = 0;
   for (std::string line; std::getline(in, line); ++k) {
     const auto request = nlohmann::json::parse(line, nullptr, false);
-    if (request.is_discarded() || !request.contains("key") || !request.contains("args")) continue;
+    if (request.is_discarded() || !request.contains("key") || !request["key"].is_string()) continue;
+    if (request.contains("call") && request["call"].is_string()) {  // a C++ exercise on held-out inputs
+      try {
+        observeJson(request["key"].get<std::string>(), [&] {
+          return callRegistered(request["call"].get<std::string>(), request.value("inputs", nlohmann::json()));
+        });
+      } catch (const std::exception&) {  // recorded on the tape: the judge reports it
+      }
+      continue;
+    }
+    if (!request.contains("args")) continue;
     // In the tape's folder: the runner's own, while other exercises' runners may be running too.
     recordRun(request["key"].get<std::string>(), tapeDir() / ("request-" + std::to_string(k)),
               request["args"].get<std::vector<std::string>>());
   }
   return 0;
 }
+
+fs::path testOutputDir() { return outputDir(); }
 
 std::string runLabOutput(const std::string& id, const std::string& name, const std::vector<std::string>& args,
                          std::string& failure) {
@@ -401,6 +431,8 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
     const fs::path refPfm = out / "reference_varied.pfm";
     std::vector<std::string> all = {"--size", "256x256", "--dump-visibility", refPfm.string()};
     all.insert(all.end(), args.begin(), args.end());
+    if (fs::exists(out / "upstream.json"))  // the inputs the graded exercise had (keepOnlyCalls)
+      all.insert(all.end(), {"--replay-exercises", (out / "upstream.json").string()});
     fs::remove(refPfm);
     if (runApp(out, "", trustedExe(), all, out / "reference.log").first != 0 || !fs::exists(refPfm))
       FAIL() << "ERROR: the reference render of the varied scene failed (a fault of the grader):\n"
@@ -452,6 +484,12 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
   msg << "\n  diff: " << (out / "diff.png").string()
       << " (red: shadowed where the reference is lit; blue: lit where it is shadowed)"
       << "\n  reference: " << (out / "reference.png").string() << "\n  result: " << (out / "result.png").string();
+  if (varySeed() < 0 && !exerciseUses(id).empty()) {  // check: the golden was drawn with the reference's inputs
+    msg << "\n  this scene runs " << id << " on what your";
+    for (const std::string& u : exerciseUses(id)) msg << " " << u;
+    msg << " returned: if any of those fails its own tests, fix it first (the grader judges " << id
+        << " on your inputs against the reference run on the same inputs; this check has only the golden)";
+  }
   FAIL() << msg.str();
 }
 

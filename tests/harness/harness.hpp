@@ -82,10 +82,15 @@ class IsolatedShaders {
 /// (a held-out scene, "hidden/NAME.json", is read from the instructor-only tests/hidden/<lab>/scenes).
 std::vector<std::string> labArgs(const std::vector<std::string>& settings, const std::string& scene = "");
 
-/// A runner's answer to a judge's plan (held-out tests, which are not in the runner): records the
-/// lab run of each request in `requests` (JSON lines {"key", "args"}: what the judge's planning pass,
-/// WB_PLAN=FILE, wrote) on the tape, under the judge's keys. Returns the exit code for main().
+/// A runner's answer to a judge's plan (held-out tests, which are not in the runner): records each
+/// request in `requests` (JSON lines: what the judge's planning pass, WB_PLAN=FILE, wrote) on the
+/// tape, under the judge's keys: a lab run ({"key", "args"}) or a call of a WB_CALLABLE exercise
+/// ({"key", "call", "inputs"}). Returns the exit code for main().
 int recordRequestedRuns(const std::filesystem::path& requests);
+
+/// The folder this test binary writes its outputs to (WB_TEST_OUTPUT_DIR when set), for a test that
+/// names files of its own (--dump-visibility).
+std::filesystem::path testOutputDir();
 
 /// Runs the lab headless for exercise `id` (isolated as in expectSceneMatchesGolden()) with `args`
 /// and returns its output; `failure` is set ("ERROR: …" or "NOT IMPLEMENTED: …") if it did not run.

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cctype>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -86,6 +87,34 @@ json observeJson(const std::string& key, const std::function<json()>& produce) {
   if (entry.contains("not_implemented")) throw NotImplemented(entry["not_implemented"].get<std::string>());
   if (entry.contains("error")) throw Error(entry["error"].get<std::string>());
   return entry["value"];
+}
+
+bool planning() {
+  const char* plan = std::getenv("WB_PLAN");
+  return plan && *plan && g_mode == TapeMode::Replay;
+}
+
+void planRequest(const json& request) {
+  std::lock_guard<std::mutex> lock(g_mutex);
+  std::ofstream(std::getenv("WB_PLAN"), std::ios::app) << request.dump() << "\n";
+}
+
+namespace {
+std::map<std::string, Callable>& callables() {
+  static std::map<std::string, Callable> all;
+  return all;
+}
+}  // namespace
+
+bool registerCallable(const std::string& name, Callable call) {
+  callables()[name] = std::move(call);
+  return true;
+}
+
+json callRegistered(const std::string& name, const json& inputs) {
+  const auto it = callables().find(name);
+  if (it == callables().end()) throw Error("no exercise " + name + " can be called by name (WB_CALLABLE)");
+  return it->second(inputs);
 }
 
 bool observeFile(const std::string& name, const fs::path& path) {

@@ -17,6 +17,7 @@
 #include <functional>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace wb::test {
@@ -57,7 +58,79 @@ T observe(const std::function<T()>& produce) {
 /// if there is none.
 bool observeFile(const std::string& name, const std::filesystem::path& path);
 
+/// True in a judge's planning pass (WB_PLAN=FILE): the held-out tests, which no runner holds, list
+/// what a runner must record for them.
+bool planning();
+/// Appends one request to the plan: {"key", "args"} (a lab run) or {"key", "call", "inputs"} (a C++
+/// exercise called by name, see WB_CALL_HELD_OUT).
+void planRequest(const nlohmann::json& request);
+
+/// An exercise argument or result as JSON (an enum as its int).
+template <class T>
+nlohmann::json encodeValue(const T& v) {
+  if constexpr (std::is_enum_v<T>)
+    return encode(int(v));
+  else
+    return encode(v);
+}
+/// The inverse of encodeValue(); throws wb::Error on malformed data.
+template <class T>
+T decodeValue(const nlohmann::json& j) {
+  if constexpr (std::is_enum_v<T>)
+    return T(decode<int>(j));
+  else
+    return decode<T>(j);
+}
+
+/// A C++ exercise a runner can call by name, on inputs from a request (JSON array, one per argument).
+using Callable = std::function<nlohmann::json(const nlohmann::json& inputs)>;
+/// Registers `call` under `name`; WB_CALLABLE does it for an exercise function.
+bool registerCallable(const std::string& name, Callable call);
+/// Calls the exercise registered as `name` (throws wb::Error naming it when there is none).
+nlohmann::json callRegistered(const std::string& name, const nlohmann::json& inputs);
+
+/// The number of arguments of an exercise function.
+template <class R, class... A>
+constexpr size_t arity(R (*)(A...)) {
+  return sizeof...(A);
+}
+
+template <class R, class... A, size_t... I>
+nlohmann::json callWithInputs(R (*fn)(A...), const nlohmann::json& inputs, std::index_sequence<I...>) {
+  if (!inputs.is_array() || inputs.size() != sizeof...(A)) throw Error("malformed inputs of a requested call");
+  return encodeValue(fn(decodeValue<std::decay_t<A>>(inputs[I])...));
+}
+
+/// Observes a call of exercise function `fn` (registered as `name`) on `args`. In a judge's planning
+/// pass it also asks the runner for that call (the solution's result keeps the test going), so a
+/// held-out test can call an exercise on inputs no runner binary holds; otherwise like WB_CALL.
+template <class R, class... A, class... B>
+R observeCall(const char* name, R (*fn)(A...), const B&... args) {
+  static_assert(sizeof...(A) == sizeof...(B), "one value per argument");
+  const std::string key = nextObservationKey();
+  if (tapeMode() == TapeMode::Direct) return fn(args...);
+  if (planning()) {
+    planRequest({{"key", key}, {"call", name}, {"inputs", {encodeValue<std::decay_t<A>>(args)...}}});
+    return fn(args...);
+  }
+  return decodeValue<R>(observeJson(key, [&] { return encodeValue(fn(args...)); }));
+}
+
 }  // namespace wb::test
 
 /// Observes the value of a C++ exercise call: `m = WB_CALL(lab01::f(x))`. The judge never calls it.
 #define WB_CALL(expr) ::wb::test::observe<std::decay_t<decltype(expr)>>([&] { return (expr); })
+
+/// Makes exercise function `fn` callable by name in a runner (put it in the lab's public tests):
+/// `WB_CALLABLE(lab10::fitCascade);`. Held-out tests call it with WB_CALL_HELD_OUT.
+#define WB_CALLABLE(fn)                                                                                 \
+  static const bool WB_CALLABLE_CAT(wbCallable, __LINE__) =                                             \
+      ::wb::test::registerCallable(#fn, [](const nlohmann::json& in) {                                  \
+        return ::wb::test::callWithInputs(&fn, in, std::make_index_sequence<::wb::test::arity(&fn)>{}); \
+      })
+#define WB_CALLABLE_CAT2(a, b) a##b
+#define WB_CALLABLE_CAT(a, b) WB_CALLABLE_CAT2(a, b)
+
+/// A held-out test's call of a WB_CALLABLE exercise: `m = WB_CALL_HELD_OUT(lab10::fitCascade, v, c, r)`.
+/// The runner, which does not hold the test, makes the call from the judge's plan.
+#define WB_CALL_HELD_OUT(fn, ...) ::wb::test::observeCall(#fn, &fn, __VA_ARGS__)
