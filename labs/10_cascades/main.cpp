@@ -223,7 +223,7 @@ class CascadeLab : public wb::Lab {
     wb::Program*& p = scenePrograms[defines + (filter ? "vsm" : "")];
     if (!p)
       p = &loadProgram(
-          {{GL_VERTEX_SHADER, "wb/scene.vert"}, {GL_FRAGMENT_SHADER, filter ? "scene_vsm.frag" : "scene.frag"}},
+          {{GL_VERTEX_SHADER, "cascades.vert"}, {GL_FRAGMENT_SHADER, filter ? "scene_vsm.frag" : "scene.frag"}},
           defines);
     return *p;
   }

@@ -9,6 +9,8 @@
 in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
+in vec3 v_light[4];  // the point in each cascade's light clip space (cascades.vert)
+in float v_depth;    // its view distance
 uniform vec3 u_color;
 uniform sampler2D u_albedo;
 uniform int u_hasTexture;
@@ -18,7 +20,7 @@ layout(binding = 2) uniform sampler2DArrayShadow u_compare;  // the same maps, t
 uniform mat4 u_cascades[4];
 uniform float u_splits[4];     // the far end of each cascade (view distance)
 uniform float u_splitNear[4];  // the near end
-uniform mat4 u_view;
+uniform mat4 u_view;  // (cascades.vert)
 uniform int u_count, u_ready;
 uniform float u_band, u_bias;
 uniform vec3 u_lightDir;
@@ -33,9 +35,8 @@ uniform float u_minVariance, u_bleeding;
 
 // Lab 05's bound on the lit share (your chebyshevUpperBound and reduceLightBleeding) from cascade
 // i's filtered moments, or 1 outside its map.
-float lookup(int i, vec3 world) {
-  vec4 c = u_cascades[i] * vec4(world, 1.0);
-  vec3 p = c.xyz / c.w * 0.5 + 0.5;
+float lookup(int i) {
+  vec3 p = v_light[i] * 0.5 + 0.5;
   if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return 1.0;
   vec2 moments = texture(u_moments, vec3(p.xy, float(i))).rg;
   float bound = chebyshevUpperBound(moments, p.z, u_minVariance);
@@ -44,9 +45,8 @@ float lookup(int i, vec3 world) {
 #else
 // The lit share of cascade i's 2x2 texel neighbourhood (the sampler's bilinear comparison, 2x2 PCF),
 // or 1 outside its map.
-float lookup(int i, vec3 world) {
-  vec4 c = u_cascades[i] * vec4(world, 1.0);
-  vec3 p = c.xyz / c.w * 0.5 + 0.5;
+float lookup(int i) {
+  vec3 p = v_light[i] * 0.5 + 0.5;
   if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return 1.0;
   vec2 step = u_tapWorld * u_uvPerWorld[i];  // the same world spacing in every cascade
   float lit = 0.0;
@@ -58,10 +58,7 @@ float lookup(int i, vec3 world) {
 #endif
 
 // Whether cascade i's map holds the point (the blend band may reach past the next cascade's map).
-bool inMap(int i, vec3 world) {
-  vec4 c = u_cascades[i] * vec4(world, 1.0);
-  return all(lessThanEqual(abs(c.xyz / c.w), vec3(1.0)));
-}
+bool inMap(int i) { return all(lessThanEqual(abs(v_light[i]), vec3(1.0))); }
 
 // debug.cascades: red, green, blue, yellow.
 vec3 cascadeTint(int i) {
@@ -89,7 +86,7 @@ void main() {
   if (!gl_FrontFacing) n = -n;
   vec3 toLight = -u_lightDir;
   bool facesLight = dot(n, toLight) > 0.0;
-  float depth = -(u_view * vec4(v_world, 1.0)).z;
+  float depth = v_depth;
   vec4 splits = vec4(u_splits[0], u_splits[1], u_splits[2], u_splits[3]);
 #ifdef WB_SELECT_MAP
   int i = cascadeByMap(v_world, u_cascades, u_count);
@@ -104,19 +101,18 @@ void main() {
 #ifdef WB_SELECT_MAP
   if (depth >= u_splits[i]) w = 0.0;  // the map kept a finer cascade past its split: no band there
 #endif
-  if (w > 0.0 && !inMap(i + 1, v_world)) w = 0.0;  // a band point outside the next map: this one alone
+  if (w > 0.0 && !inMap(i + 1)) w = 0.0;  // a band point outside the next map: this one alone
 #ifdef WB_DENSITY  // the aliasing measure: how many texels of cascade i one pixel spans
-  vec4 c = u_cascades[i] * vec4(v_world, 1.0);
-  vec2 t = (c.xy / c.w * 0.5 + 0.5) * vec2(textureSize(u_maps, 0).xy);
+  vec2 t = (v_light[i].xy * 0.5 + 0.5) * vec2(textureSize(u_maps, 0).xy);
   float texels = max(length(dFdx(t)), length(dFdy(t)));
   wbWriteOutputs(vec3(clamp(log2(texels) / 8.0 + 0.5, 0.0, 1.0), 0.2, 0.2), texels, v_world, true);
 #else
 #ifdef WB_SMOOTH_BLEND  // both cascades, mixed
-  float visibility = lookup(i, v_world);
-  if (w > 0.0) visibility = mix(visibility, lookup(i + 1, v_world), w);
+  float visibility = lookup(i);
+  if (w > 0.0) visibility = mix(visibility, lookup(i + 1), w);
 #else  // dithered: the next cascade where w beats a per-pixel threshold (interleaved gradient noise)
   float threshold = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
-  float visibility = lookup(w > threshold ? i + 1 : i, v_world);
+  float visibility = lookup(w > threshold ? i + 1 : i);
 #endif
   if (wbIsTodo(visibility)) {  // csm.filter=vsm before lab 05 is done
     wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
