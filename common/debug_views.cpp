@@ -60,11 +60,14 @@ void DebugViews::drawFrusta(const LightView& light, const glm::mat4& viewer) con
     lines_.set("u_color", layers ? cascade[k % 4] : glm::vec3(1, 0.85f, 0.1f));
     glDrawArrays(GL_LINES, 0, 24);
   }
+  lines_.set("u_useCorners", 1);
   for (size_t k = 0; k < light.outlines.size(); ++k) {
-    lines_.set("u_invLight", glm::inverse(light.outlines[k]));
+    for (int c = 0; c < 8; ++c)
+      lines_.set(("u_corners[" + std::to_string(c) + "]").c_str(), light.outlines[k][size_t(c)]);
     lines_.set("u_color", 0.6f * (layers ? cascade[k % 4] : glm::vec3(1, 0.85f, 0.1f)));
     glDrawArrays(GL_LINES, 0, 24);
   }
+  lines_.set("u_useCorners", 0);
 }
 
 void DebugViews::drawInset(const LightView& light, glm::ivec2 frame) const {

@@ -49,6 +49,10 @@ class ExerciseTape {
   std::map<std::string, size_t> used_;
 };
 
+/// Parses `text` as JSON, refusing nesting deeper than `maxDepth` before it recurses (a tape is
+/// written by untrusted code: a line nested a million deep would overflow the stack); throws.
+nlohmann::json parseShallowJson(const std::string& text, int maxDepth = 16);
+
 /// The depth pass's rasterizer state that exercises may set (polygon offset, culling), as JSON.
 nlohmann::json captureRasterState();
 /// Sets the state captureRasterState() returned; throws wb::Error on malformed data.

@@ -145,7 +145,7 @@ void Lab::renderFilteredShadowMap(const Program& writer, FilteredShadowMap& map,
     map.begin(far);
     writer.set("u_lightViewProj", lightViewProj);
     writer.set("u_alphaCutoff", alphaCutoff_);
-    gpuScene->drawCasters(writer);
+    gpuScene->draw(writer);  // every object: filtering needs the receivers' depths too
   }
   {
     auto timer = timePass("prefilter");

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -27,9 +28,10 @@ struct LightView {
   /// along p − light), and the depth bias each test subtracts from |p − light|.
   std::vector<glm::vec3> cubeOffsets;
   float cubeBias = 0;  ///< see cubeOffsets
-  /// More boxes for debug.frustum, world → clip like viewProj (a cascade's slice of the view), drawn
-  /// fainter in the colour of the matrix with the same index.
-  std::vector<glm::mat4> outlines;
+  /// More boxes for debug.frustum, by their eight world-space corners (the near face's (−x, −y),
+  /// (+x, −y), (+x, +y), (−x, +y), then the far face's): a cascade's slice of the view, drawn fainter
+  /// in the colour of the matrix with the same index.
+  std::vector<std::array<glm::vec3, 8>> outlines;
 
   /// True when a shadow map was rendered this frame.
   bool hasMap() const { return texture != 0 && !viewProj.empty(); }

@@ -85,6 +85,26 @@ void PrefilterSettings::addTo(Settings& settings) {
   settings.assign("shadow.map_size=512");
 }
 
+void FilteredShadowMapArray::resize(int size, int layers, GLenum format) {
+  if (size == size_ && format == format_ && layers == int(layers_.size()) && array_.id()) return;
+  layers_.resize(size_t(layers));
+  size_ = size, format_ = format;
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+  array_ = Texture(id);
+  glTextureStorage3D(id, 1, format, size, size, layers);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+void FilteredShadowMapArray::copy(int k) const {
+  const FilteredShadowMap& m = layers_.at(size_t(k));
+  glCopyImageSubData(m.texture(), GL_TEXTURE_2D, 0, 0, 0, 0, array_.id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, k, size_, size_,
+                     1);
+}
+
 void FilteredShadowMap::resize(int size, const PrefilterOptions& o) {
   const bool same = size == size_ && o.format == options_.format && o.mipmaps == options_.mipmaps && color_.id();
   options_ = o;

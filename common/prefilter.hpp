@@ -70,6 +70,27 @@ class FilteredShadowMap {
   PrefilterOptions options_;
 };
 
+/// Filtered maps for cascades: one FilteredShadowMap per layer, each with a blur of its own width,
+/// copied into one array texture after its prefilter, so a lab reads every cascade through one
+/// sampler2DArray (lab 10's csm.filter=vsm).
+class FilteredShadowMapArray {
+ public:
+  /// (Re)allocates the array when the size, layer count or format changes.
+  void resize(int size, int layers, GLenum format);
+  /// Layer k's map: resize() it with that layer's options, draw and prefilter it, then copy().
+  FilteredShadowMap& layer(int k) { return layers_.at(size_t(k)); }
+  /// Copies layer k's filtered map into the array.
+  void copy(int k) const;
+  /// The array texture (linear filtering, clamped).
+  GLuint texture() const { return array_.id(); }
+
+ private:
+  std::vector<FilteredShadowMap> layers_;
+  Texture array_;
+  int size_ = 0;
+  GLenum format_ = 0;
+};
+
 /// The prefilter's normalised weights for taps 0..r of a kernel `kernel` texels wide (r = kernel / 2):
 /// Gaussian with sigma = kernel / 4, or a box.
 void blurWeights(int kernel, bool gaussian, float weights[8]);

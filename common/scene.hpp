@@ -29,9 +29,11 @@ struct SceneObject {
   /// Casts a stencil shadow volume (lab 09; file field "casts_volume", default true unless the object
   /// is textured: an alpha-tested outline is not its triangles' outline).
   bool castsVolume = true;
-  /// Drawn into the shadow maps by the framework's shadow passes (file field "casts_shadow", default
-  /// true). A receiver that cannot shade anything, such as a ground that everything stands on, may
-  /// say false: the maps then skip its texels (lab 10's field fills three cascades otherwise).
+  /// Drawn into the depth shadow maps by the framework's shadow passes (file field "casts_shadow",
+  /// default true). A receiver that cannot shade anything, such as a ground that everything stands
+  /// on, may say false: the maps then skip its texels (lab 10's field fills three cascades
+  /// otherwise). Filtered maps (ESM, VSM, EVSM) draw it anyway: their filtering mixes occluders
+  /// with the receivers behind them, and without the receiver it mixes them with the far plane.
   bool castsShadow = true;
 };
 

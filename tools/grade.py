@@ -201,6 +201,7 @@ class Sandbox:
             self.notes.append("network and PID namespaces are not available here (unshare failed): tests run "
                               "with the network, and a process a submission leaves behind is killed by session "
                               "only")
+        self.private = self.private_tmp() if self.ns else []
         if self.drop and subprocess.run(self.prefix(NOBODY) + ["test", "-x", str(ROOT)],
                                         capture_output=True).returncode != 0:
             self.drop = False
@@ -208,10 +209,31 @@ class Sandbox:
                               "the way to it world-enterable to drop privileges)")
         self.user = f"a user of their own (uid {SANDBOX_UID} and up)" if self.drop else "the grader's user"
 
+    # Mounts an empty tmpfs on each folder named before "--", then runs the rest.
+    MOUNT_TMP = 'while [ "$1" != -- ]; do mount -t tmpfs -o mode=1777 tmpfs "$1" || exit 97; shift; done; shift; exec "$@"'
+
+    def private_tmp(self):
+        """The world-writable folders each sandboxed command gets empty, of its own (so one runner
+        cannot leave a held-out input in /dev/shm for a later, visible one to print), where the mount
+        namespace allows it. A folder that holds this checkout stays shared (the sweep between
+        submissions still empties it)."""
+        dirs = [d for d in SHARED_TMP if Path(d).is_dir() and Path(d) not in ROOT.parents and Path(d) != ROOT]
+        shared = [d for d in SHARED_TMP if Path(d).is_dir() and d not in dirs]
+        wrap = ["sh", "-c", self.MOUNT_TMP, "sh", *dirs, "--"]
+        if dirs and subprocess.run(self.ns + wrap + ["true"], capture_output=True).returncode != 0:
+            self.notes.append("no private /tmp for the tests (mounting a tmpfs failed): a submission's tests share "
+                              "/tmp, /var/tmp and /dev/shm while it is graded")
+            return []
+        if shared:
+            self.notes.append(f"{', '.join(shared)} holds the grader's checkout, so it is shared between a "
+                              "submission's tests (and emptied between submissions)")
+        return wrap if dirs else []
+
     def prefix(self, uid):
-        """The command prefix that runs a command in the namespaces, as `uid` when privileges drop."""
+        """The command prefix that runs a command in the namespaces (with a /tmp, /var/tmp and /dev/shm
+        of its own), as `uid` when privileges drop."""
         drop = ["setpriv", f"--reuid={uid}", f"--regid={uid}", "--clear-groups", "--"] if self.drop else []
-        return self.ns + drop
+        return self.ns + self.private + drop
 
     def run(self, cmd, timeout, cwd=None, env=None, uid=NOBODY):
         """(exit code or -signal, output, timed_out), as `uid` when the sandbox drops privileges."""
@@ -630,7 +652,7 @@ class Grader:
                 tests.append(suite + line.split()[0])
         return tests
 
-    def run_tests(self, lab, gfilter, tag, held_out=False):
+    def run_tests(self, lab, gfilter, tag, held_out=False, replay_uses=()):
         """Grades one exercise's tests: (passed, failures [(test, message)], runner output). The
         student's test binary runs as the *runner* in the sandbox and records what its C++ exercises
         produce on a tape; the solution's test binary, the *judge*, replays that tape, draws every
@@ -650,9 +672,12 @@ class Grader:
         # process has a home of its own: nothing in a shared /tmp (a Mesa .drirc) reaches it.
         env = dict(os.environ, HOME=str(tape), TMPDIR=str(tape), WB_STRICT_GL="1",
                    WB_VARY_SEED=str(self.vary_seed), WB_RECORD_SHADERS=str(self.ws.stubs / lab["name"] / "shaders"))
-        jenv = dict(env, HOME=str(judged), TMPDIR=str(judged),
-                    WB_SUBMISSION_DIR=str(self.ws.lab_dir(lab["name"])))  # the student's GLSL
-        what = ["--requests", str(self.plan(judge, gfilter, judged, jenv, tape, uid))] if held_out \
+        # WB_REPLAY_USES: the used exercises (manifest "uses") that failed their own tests, the only
+        # ones whose recorded results the judge replays beside the graded one; WB_HELD_OUT: quote
+        # nothing the runner wrote (it could carry held-out inputs).
+        jenv = dict(env, HOME=str(judged), TMPDIR=str(judged), WB_SUBMISSION_DIR=str(self.ws.lab_dir(lab["name"])),
+                    WB_REPLAY_USES=",".join(replay_uses), WB_HELD_OUT="1" if held_out else "")
+        what = ["--requests", str(self.plan(lab, judge, gfilter, judged, jenv, tape, uid))] if held_out \
             else [f"--gtest_filter={gfilter}"]
         code, out, timed_out = self.sandbox.run([str(runner)] + what + ["--runner", str(tape)], self.timeout,
                                                 env=env, cwd=tape, uid=uid)
@@ -683,7 +708,7 @@ class Grader:
         failures = stopped + failures
         return not failures, failures, out
 
-    def plan(self, judge, gfilter, judged, env, tape, uid):
+    def plan(self, lab, judge, gfilter, judged, env, tape, uid):
         """The judge's planning pass over held-out tests: the lab runs (JSON lines {key, args}) and the
         calls of C++ exercises on held-out inputs ({key, call, inputs}) the runner must record, written into its tape folder as requests.jsonl, with each input file of
         the instructor's (a held-out scene) copied beside it, since the runner cannot read them."""
@@ -696,7 +721,8 @@ class Grader:
             request = json.loads(line)
             for k, arg in enumerate(request.get("args", [])):  # (a call request has inputs, no files)
                 path = Path(arg)
-                if path.is_absolute() and path.is_file() and ROOT in path.parents:
+                hidden = ROOT / "tests/hidden" / lab["name"]  # (the lab's held-out inputs, nothing else)
+                if path.is_absolute() and path.is_file() and hidden in path.resolve().parents:
                     inputs.mkdir(exist_ok=True)
                     copy = inputs / f"{len(list(inputs.iterdir()))}-{path.name}"
                     shutil.copyfile(path, copy)
@@ -707,7 +733,7 @@ class Grader:
         own(tape, uid)
         return requests
 
-    def grade_exercise(self, lab, e, tests, broken):
+    def grade_exercise(self, lab, e, tests, broken, replay_uses=()):
         """(ok, failures, images, hidden result, has hidden tests) of one exercise with the current build."""
         ex_id, tag = e["id"], e["id"].replace(".", "_")
         mine = [t for t in tests if f".Ex{tag}_" in t]
@@ -716,16 +742,17 @@ class Grader:
             msg = broken[ex_id]
             msg = msg if msg.startswith("ERROR") else f"ERROR: does not compile: {first_line(msg)}\n{msg}"
             return False, [("", msg)], [], None, has_hidden
-        ok, failures, _ = self.run_tests(lab, f"*.Ex{tag}_*-Hidden*.*", f"{tag}_visible")
+        ok, failures, _ = self.run_tests(lab, f"*.Ex{tag}_*-Hidden*.*", f"{tag}_visible", replay_uses=replay_uses)
         hidden_result = None
         if has_hidden and any("timed out after" in m for _, m in failures):  # another wait would tell nothing new
             hidden_result = (False, [("", "ERROR: not run: the exercise's other tests timed out")], "")
         elif has_hidden:
-            hidden_result = self.run_tests(lab, f"Hidden*.Ex{tag}_*", f"{tag}_hidden", held_out=True)
+            hidden_result = self.run_tests(lab, f"Hidden*.Ex{tag}_*", f"{tag}_hidden", held_out=True,
+                                           replay_uses=replay_uses)
         kept = copy_images(failures + (hidden_result[1] if hidden_result else []), self.images, tag)
         return ok, failures, kept, hidden_result, has_hidden
 
-    def grade_alone(self, lab, e, mine, tests):
+    def grade_alone(self, lab, e, mine, tests, replay_uses=()):
         """Grades C++ exercise `e` with only its own chunk from `mine`, and those of the exercises it
         takes its inputs from ("uses" in the manifest: the judge replays those too), the stubs for the
         others."""
@@ -739,7 +766,7 @@ class Grader:
         ok, _ = self.build_lab(lab)
         if not ok:
             return None
-        return self.grade_exercise(lab, e, tests, {})
+        return self.grade_exercise(lab, e, tests, {}, replay_uses)
 
     def grade(self, submission, out_dir, name):
         """Grades one submission into out_dir and returns its result. Whatever goes wrong is recorded
@@ -805,8 +832,16 @@ class Grader:
                     broken = self.compile_lab(lab, files)
                 tests = self.list_tests(lab)
                 with concurrent.futures.ThreadPoolExecutor(self.test_jobs) as pool:  # one process each
-                    futures = {e["id"]: pool.submit(self.grade_exercise, lab, e, tests, broken) for e in lab["exercises"]}
-                    outcome = {i: f.result() for i, f in futures.items()}
+                    outcome, failed_uses = {}, {}
+                    pending = list(lab["exercises"])
+                    while pending:  # in "uses" order: an exercise after those whose results it takes
+                        wave = [e for e in pending if all(u in outcome for u in e.get("uses", []))] or pending
+                        for e in wave:
+                            failed_uses[e["id"]] = [u for u in e.get("uses", []) if u in outcome and not outcome[u][0]]
+                        futures = {e["id"]: pool.submit(self.grade_exercise, lab, e, tests, broken,
+                                                        failed_uses[e["id"]]) for e in wave}
+                        outcome.update({i: f.result() for i, f in futures.items()})
+                        pending = [e for e in pending if e["id"] not in outcome]
                 # A C++ exercise runs in the app with the student's other C++ exercises: when several
                 # fail, one may be failing because of another (a crash, a loop, a wrong light fit).
                 # Each is then graded again in the stub's file with only its own chunk.
@@ -816,7 +851,8 @@ class Grader:
                           and runs_app(outcome[e["id"]])]
                 if failed and len(failing) >= 2 and "exercise.cpp" in files:
                     for e in failed:
-                        alone = self.grade_alone(lab, e, files["exercise.cpp"].decode(errors="replace"), tests)
+                        alone = self.grade_alone(lab, e, files["exercise.cpp"].decode(errors="replace"), tests,
+                                                 failed_uses[e["id"]])
                         if alone is not None:
                             outcome[e["id"]] = alone
                 for e in lab["exercises"]:

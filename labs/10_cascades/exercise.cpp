@@ -39,8 +39,9 @@ glm::mat4 stableCascade([[maybe_unused]] const glm::mat4& lightView,
                         [[maybe_unused]] const std::array<glm::vec3, 8>& corners, [[maybe_unused]] int mapSize,
                         [[maybe_unused]] float casterReach) {
   throw wb::NotImplemented("10.4 stableCascade");
-  // Hints: centre and radius first (round the radius up: std::ceil(r * 16) / 16); in light space, one
-  // texel is 2 * radius / mapSize wide: floor the centre's x and y to a multiple of it.
+  // Hints: the centre and the radius first (round the radius up to the next multiple of 1/16); in
+  // light space one texel is 2 * radius / mapSize wide: move the centre's x and y down to a whole
+  // number of texels. The depth range is the sphere's, extended towards the light by casterReach.
 }
 
 }  // namespace lab10

@@ -35,7 +35,9 @@ glm::mat4 fitCascade(const glm::mat4& lightView, const std::array<glm::vec3, 8>&
 /// EXERCISE 10.4: the same, stabilised: fit the slice's bounding sphere (centre the corners' mean,
 /// radius the largest distance to a corner, rounded up to a multiple of 1/16 world unit), so the
 /// box's size never changes as the camera turns; then move the box so its origin lies on a whole
-/// texel of a `mapSize` map, so the texel grid never moves as the camera slides.
+/// texel of a `mapSize` map, so the texel grid never moves as the camera slides. The box is the
+/// sphere's: 2r wide and high around the (snapped) centre, and in depth from r + casterReach in
+/// front of the centre (towards the light) to r behind it.
 glm::mat4 stableCascade(const glm::mat4& lightView, const std::array<glm::vec3, 8>& corners, int mapSize,
                         float casterReach);
 

@@ -7,6 +7,7 @@
 // trees on the horizon. Cascades cut the view into slices, near ones short and far ones long, and give
 // each slice a map of its own: resolution where the camera needs it.
 #include "common/lab.hpp"
+#include "common/prefilter.hpp"
 #include "exercise.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -34,8 +35,13 @@ class CascadeLab : public wb::Lab {
     settings.addChoice("csm.kernel", kernel, {"1", "3", "5", "7"},
                        "PCF taps per side (each a 2x2 comparison), spaced by cascade 0's texel in world units in "
                        "every cascade, so softness stays the same across the splits");
+    settings.addChoice("csm.filter", filter, {"pcf", "vsm"},
+                       "pcf: a comparing lookup per tap; vsm: your lab 05 functions on moments prefiltered per "
+                       "cascade (blur width csm.kernel, in cascade 0's texels, kept in world units)");
+    settings.add("vsm.min_variance", minVariance, 0.0f, 0.001f, "csm.filter=vsm: as in lab 05");
+    settings.add("vsm.bleeding_reduction", bleeding, 0.0f, 0.9f, "csm.filter=vsm: as in lab 05");
     settings.add("csm.freeze", freeze, "keep the cascades (and their slices) where they are while the camera moves");
-    settings.addChoice("measure.region", region, {"all", "c1", "c2", "c3", "c4", "splits", "rest"},
+    settings.addChoice("measure.region", region, {"all", "c0", "c1", "c2", "c3", "splits", "rest"},
                        "the pixels --metrics counts: all, one cascade, those within 10% of a cascade's range of an "
                        "inner split, or the rest (the others are dimmed)");
     settings.add("debug.cascades", showCascades, "tint each cascade: red, green, blue, yellow");
@@ -66,92 +72,136 @@ class CascadeLab : public wb::Lab {
 
   void render() override {
     if (pathStep > 0) camera.pose = poseAt(pathStep);
-    wb::OrbitCamera fitted = camera;  // the camera the cascades are built for
-    if (matricesStep >= 0) fitted.pose = poseAt(matricesStep);
     const wb::Light& light = scene.lights[size_t(lightIndex)];
-    const float nearPlane = fitted.nearPlane;
-    std::vector<float> splits;
-    bool ready = attempt("10.1", splits, [&] {
-      return lab10::splitDistances(nearPlane, shadowFar, count, lab10::SplitScheme(scheme), lambda);
-    });
-    ready = ready && splits.size() == size_t(count) + 1;
-    // While 10.1 is missing, placeholder distances (never drawn) still let 10.2 - 10.4 run, so that each
-    // exercise is called every frame: the grader records every one from the lab's own run.
-    if (!ready) {
-      splits.clear();
-      for (int i = 0; i <= count; ++i) splits.push_back(nearPlane + float(i));
-    }
-    std::vector<glm::mat4> cascades(size_t(count), glm::mat4(1)), slices;
-    const glm::mat4 lightView = glm::lookAt(glm::vec3(0), light.direction, upFor(light.direction));
-    for (int i = 0; i < count; ++i) {
-      std::array<glm::vec3, 8> corners{};
-      for (int k = 0; k < 8; ++k)  // placeholder corners (never drawn) if 10.2 is missing
-        corners[size_t(k)] = fitted.pose.target + glm::vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
-      ready = attempt("10.2", corners,
-                      [&] {
-                        return lab10::sliceCorners(glm::inverse(fitted.view()), glm::radians(fitted.pose.fov), aspect(),
-                                                   splits[size_t(i)], splits[size_t(i) + 1]);
-                      }) &&
-              ready;
-      const float reach = 0.5f * glm::length(scene.boundsMax - scene.boundsMin);
-      // Both fits every frame (the grader records each from the lab's own run); csm.stable picks one.
-      glm::mat4 cropped(1), stabilised(1);
-      const bool crop = attempt("10.3", cropped, [&] { return lab10::fitCascade(lightView, corners, reach); });
-      const bool sphere =
-          attempt("10.4", stabilised, [&] { return lab10::stableCascade(lightView, corners, shadowMapSize(), reach); });
-      cascades[size_t(i)] = stable ? stabilised : cropped;
-      ready = (stable ? sphere : crop) && ready;
-      slices.push_back(
-          glm::perspective(glm::radians(fitted.pose.fov), aspect(), splits[size_t(i)], splits[size_t(i) + 1]) *
-          fitted.view());
-    }
-    if (freeze && frozen.ready && frozen.cascades.size() == size_t(count))
-      cascades = frozen.cascades, splits = frozen.splits, slices = frozen.slices, ready = true;
+    Cascades c = buildCascades(light);
+    if (freeze && frozen.ready && frozen.matrices.size() == size_t(count))
+      c = frozen;
     else
-      frozen = {ready, cascades, splits, slices};
-    maps.resize(shadowMapSize(), count);
+      frozen = c;
 
-    // PASS 1: one depth layer per cascade.
-    if (ready) {
-      auto timer = timePass("shadow");
-      renderShadowMap(*depthProgram, maps, light, cascades);
-      wb::LightView shown = maps.describe(light, cascades);
-      shown.outlines = slices;  // debug.frustum: each cascade's box, and its slice of the view
+    // PASS 1: one depth layer per cascade (or lab 05's filtered moments, csm.filter=vsm).
+    if (c.ready) {
+      if (filter)
+        renderMoments(light, c.matrices);
+      else {
+        auto timer = timePass("shadow");
+        maps.resize(shadowMapSize(), count);
+        renderShadowMap(*depthProgram, maps, light, c.matrices);
+      }
+      wb::LightView shown = maps.describe(light, c.matrices);
+      shown.outlines = c.slices;  // debug.frustum: each cascade's box, and its slice of the view
       showLight(shown);
     }
 
     // PASS 2: the camera's view; each pixel picks its cascade (10.5) and blends at the splits (10.6).
     auto timer = timePass("lighting");
     const wb::Program& p = sceneVariant();
-    beginCameraPass(p, cascades[0], 0);
+    beginCameraPass(p, c.matrices[0], 0);
     glBindTextureUnit(1, maps.texture());
     glBindTextureUnit(2, maps.texture());
+    glBindTextureUnit(3, moments.texture());
     if (!compare.id()) compare = wb::makeComparisonSampler();
     glBindSampler(2, compare.id());
-    p.set("u_ready", ready ? 1 : 0);
-    p.set("u_count", count);
-    for (int i = 0; i < 4; ++i) {
-      const glm::mat4& m = cascades[size_t(std::min(i, count - 1))];
-      // Light clip units per world unit along the map's x and y: the rows of the matrix's 3x3 part.
-      const glm::vec2 scale(glm::length(glm::vec3(m[0][0], m[1][0], m[2][0])),
-                            glm::length(glm::vec3(m[0][1], m[1][1], m[2][1])));
-      p.set(("u_uvPerWorld[" + std::to_string(i) + "]").c_str(), 0.5f * scale);
-      if (i == 0) p.set("u_tapWorld", 2.0f / std::max(1e-6f, scale.x * float(shadowMapSize())));
-      p.set(("u_cascades[" + std::to_string(i) + "]").c_str(), m);
-      p.set(("u_splits[" + std::to_string(i) + "]").c_str(), ready ? splits[size_t(std::min(i, count - 1)) + 1] : 1e9f);
-      p.set(("u_splitNear[" + std::to_string(i) + "]").c_str(), ready ? splits[size_t(std::min(i, count - 1))] : 0.0f);
-    }
+    setCascadeUniforms(p, c);
     p.set("u_view", camera.view());
     p.set("u_band", band);
     p.set("u_bias", depthBias());
     p.set("u_lightDir", light.direction);
     p.set("u_kernel", 2 * kernel + 1);
     p.set("u_region", region);
+    p.set("u_minVariance", minVariance);
+    p.set("u_bleeding", bleeding);
     gpuScene->draw(p);
     glBindSampler(2, 0);
   }
 
  private:
+  struct Cascades {
+    bool ready = false;                            // every exercise the frame needs returned a value
+    std::vector<float> splits;                     // C_0 .. C_N (10.1)
+    std::vector<glm::mat4> matrices;               // one light matrix per cascade (10.3 or 10.4)
+    std::vector<std::array<glm::vec3, 8>> slices;  // each cascade's slice (10.2's corners), for debug.frustum
+  };
+
+  // The exercise chain 10.1 -> 10.2 -> 10.3 and 10.4, for the camera (or path step
+  // path.matrices_step). Every exercise is called every frame, whatever the others returned: the
+  // grader records each one from the lab's own run. Placeholders (never drawn) stand in for a
+  // missing 10.1 or 10.2.
+  Cascades buildCascades(const wb::Light& light) {
+    wb::OrbitCamera fitted = camera;  // the camera the cascades are built for
+    if (matricesStep >= 0) fitted.pose = poseAt(matricesStep);
+    const float nearPlane = fitted.nearPlane;
+    Cascades c;
+    c.ready = attempt("10.1", c.splits, [&] {
+      return lab10::splitDistances(nearPlane, shadowFar, count, lab10::SplitScheme(scheme), lambda);
+    });
+    c.ready = c.ready && c.splits.size() == size_t(count) + 1;
+    if (!c.ready) {
+      c.splits.clear();
+      for (int i = 0; i <= count; ++i) c.splits.push_back(nearPlane + float(i));
+    }
+    const glm::mat4 lightView = glm::lookAt(glm::vec3(0), light.direction, upFor(light.direction));
+    const float reach = 0.5f * glm::length(scene.boundsMax - scene.boundsMin);
+    for (size_t i = 0; i < size_t(count); ++i) {
+      std::array<glm::vec3, 8> corners{};
+      for (int k = 0; k < 8; ++k)
+        corners[size_t(k)] = fitted.pose.target + glm::vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+      c.ready = attempt("10.2", corners,
+                        [&] {
+                          return lab10::sliceCorners(glm::inverse(fitted.view()), glm::radians(fitted.pose.fov),
+                                                     aspect(), c.splits[i], c.splits[i + 1]);
+                        }) &&
+                c.ready;
+      glm::mat4 cropped(1), stabilised(1);  // both fits every frame; csm.stable picks one
+      const bool crop = attempt("10.3", cropped, [&] { return lab10::fitCascade(lightView, corners, reach); });
+      const bool sphere =
+          attempt("10.4", stabilised, [&] { return lab10::stableCascade(lightView, corners, shadowMapSize(), reach); });
+      c.matrices.push_back(stable ? stabilised : cropped);
+      c.ready = (stable ? sphere : crop) && c.ready;
+      c.slices.push_back(corners);
+    }
+    return c;
+  }
+
+  // PASS 1 with csm.filter=vsm: each cascade's moments (lab 05's vsmMoments), blurred by csm.kernel
+  // texels of cascade 0 in world units (fewer texels in the coarser cascades), into one array.
+  void renderMoments(const wb::Light& light, const std::vector<glm::mat4>& matrices) {
+    const float far[4] = {1, 1, 0, 0};  // depth 1: (M1, M2) = (1, 1)
+    if (!momentsProgram) {              // only now: lab 10 must run whatever state lab 05's exercise.glsl is in
+      momentsProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/depth.vert"}, {GL_FRAGMENT_SHADER, "moments_vsm.frag"}});
+      blurProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "wb/blur.frag"}});
+    }
+    moments.resize(shadowMapSize(), count, GL_RG32F);
+    maps.resize(shadowMapSize(), count);  // (the insets and debug views show the depth layers' slot)
+    const float width0 = float(2 * kernel + 1) / scaleOf(matrices[0]).x;
+    for (int i = 0; i < count; ++i) {
+      const int half = int(std::lround(0.5f * (width0 * scaleOf(matrices[size_t(i)]).x - 1)));
+      moments.layer(i).resize(shadowMapSize(), {GL_RG32F, 1 + 2 * std::clamp(half, 0, 3), false, false, false});
+      renderFilteredShadowMap(*momentsProgram, moments.layer(i), far, *blurProgram, light, matrices[size_t(i)]);
+      moments.copy(i);
+    }
+  }
+
+  // The cascades' matrices, splits and tap spacing (csm.kernel: cascade 0's texel in world units).
+  void setCascadeUniforms(const wb::Program& p, const Cascades& c) {
+    for (int i = 0; i < 4; ++i) {
+      const size_t k = size_t(std::min(i, count - 1));
+      const std::string n = "[" + std::to_string(i) + "]";
+      p.set(("u_uvPerWorld" + n).c_str(), 0.5f * scaleOf(c.matrices[k]));
+      p.set(("u_cascades" + n).c_str(), c.matrices[k]);
+      p.set(("u_splits" + n).c_str(), c.ready ? c.splits[k + 1] : 1e9f);
+      p.set(("u_splitNear" + n).c_str(), c.ready ? c.splits[k] : 0.0f);
+    }
+    p.set("u_tapWorld", 2.0f / std::max(1e-6f, scaleOf(c.matrices[0]).x * float(shadowMapSize())));
+    p.set("u_ready", c.ready ? 1 : 0);
+    p.set("u_count", count);
+  }
+
+  // Light clip units per world unit along the map's x and y: the rows of the matrix's 3x3 part.
+  static glm::vec2 scaleOf(const glm::mat4& m) {
+    return {glm::length(glm::vec3(m[0][0], m[1][0], m[2][0])), glm::length(glm::vec3(m[0][1], m[1][1], m[2][1]))};
+  }
+
   // Step k of the fixed camera path: from bookmark 1, 4 cm forward, 1.1 cm sideways and 0.03 degrees
   // round per step (a strafe of a small fraction of a near cascade's texel).
   wb::CameraBookmark poseAt(int step) const {
@@ -170,36 +220,38 @@ class CascadeLab : public wb::Lab {
     if (showDensity) defines += "#define WB_DENSITY\n";
     if (showCascades) defines += "#define WB_TINT\n";
     if (region) defines += "#define WB_REGION\n";
-    wb::Program*& p = scenePrograms[defines];
-    if (!p) p = &loadProgram({{GL_VERTEX_SHADER, "wb/scene.vert"}, {GL_FRAGMENT_SHADER, "scene.frag"}}, defines);
+    wb::Program*& p = scenePrograms[defines + (filter ? "vsm" : "")];
+    if (!p)
+      p = &loadProgram(
+          {{GL_VERTEX_SHADER, "cascades.vert"}, {GL_FRAGMENT_SHADER, filter ? "scene_vsm.frag" : "scene.frag"}},
+          defines);
     return *p;
   }
 
   static glm::vec3 upFor(const glm::vec3& d) { return std::abs(d.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0); }
   float aspect() const { return float(frameSize().x) / float(std::max(1, frameSize().y)); }
 
-  wb::Program* depthProgram = nullptr;                // PASS 1
-  std::map<std::string, wb::Program*> scenePrograms;  // PASS 2, by #defines
+  wb::Program* depthProgram = nullptr;                            // PASS 1
+  wb::Program *momentsProgram = nullptr, *blurProgram = nullptr;  // PASS 1, csm.filter=vsm
+  std::map<std::string, wb::Program*> scenePrograms;              // PASS 2, by #defines
   wb::ShadowMapArray maps;
-  wb::Sampler compare;    // 2x2 PCF in the sampler
-  int count = 3;          // cascades
-  int scheme = 2;         // practical
-  float lambda = 0.75f;   // between seed 000's 0.6 and the common 0.95
-  int stable = 1;         // on
-  int select = 0;         // interval
-  float band = 0.1f;      // 10% blend band
-  int smooth = 0;         // dithered
-  float shadowFar = 120;  // metres
-  int kernel = 0;         // 1 tap
+  wb::FilteredShadowMapArray moments;  // csm.filter=vsm
+  wb::Sampler compare;                 // 2x2 PCF in the sampler
+  int count = 3;                       // cascades
+  int scheme = 2;                      // practical
+  float lambda = 0.75f;                // between seed 000's 0.6 and the common 0.95
+  int stable = 1;                      // on
+  int select = 0;                      // interval
+  float band = 0.1f;                   // 10% blend band
+  int smooth = 0;                      // dithered
+  float shadowFar = 120;               // metres
+  int kernel = 0;                      // 1 tap
   bool freeze = false;
-  int region = 0;  // measure.region: all
+  int region = 0;                           // measure.region: all
+  int filter = 0;                           // pcf
+  float minVariance = 2e-5f, bleeding = 0;  // lab 05's defaults
   bool showCascades = false, showDensity = false;
-  struct {
-    bool ready = false;
-    std::vector<glm::mat4> cascades;
-    std::vector<float> splits;
-    std::vector<glm::mat4> slices;
-  } frozen;  // the cascades csm.freeze keeps
+  Cascades frozen;  // what csm.freeze keeps
   int pathStep = 0, matricesStep = -1;
 };
 

@@ -1,6 +1,7 @@
 #include "tests/harness/harness.hpp"
 
 #include "common/context.hpp"
+#include "common/exercise_tape.hpp"
 #include "common/glsl_harness.hpp"
 #include "common/run_record.hpp"
 #include "common/shader.hpp"
@@ -9,6 +10,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -223,32 +225,48 @@ static nlohmann::json recordRun(const std::string& key, const fs::path& out, con
 }
 
 // The exercises whose results exercise `id` takes as its inputs in the lab ("uses" in the trusted
-// manifest, labs/NN/exercises.json): 10.3 fits the slices that 10.1 and 10.2 computed.
+// manifest, labs/NN/exercises.json): 10.3 fits the slices that 10.1 and 10.2 computed. The grader
+// names in WB_REPLAY_USES the used exercises that failed their own tests; only those are replayed
+// (one that passed gets the solution's code, so a student cannot feed the graded exercise made-up
+// inputs in one test alone). Without WB_REPLAY_USES (./workbook check) every used exercise is.
 static std::vector<std::string> exerciseUses(const std::string& id) {
+  std::vector<std::string> uses;
   try {
     const auto manifest = nlohmann::json::parse(readFile(fs::path(variant::kLabDir) / "exercises.json"));
     for (const auto& e : manifest.at("exercises"))
-      if (e.at("id") == id) return e.value("uses", std::vector<std::string>{});
+      if (e.at("id") == id) uses = e.value("uses", std::vector<std::string>{});
   } catch (const std::exception&) {
   }
-  return {};
+  if (const char* failed = std::getenv("WB_REPLAY_USES")) {
+    const std::string list = "," + std::string(failed) + ",";
+    uses.erase(std::remove_if(uses.begin(), uses.end(),
+                              [&](const std::string& u) { return list.find("," + u + ",") == std::string::npos; }),
+               uses.end());
+  }
+  return uses;
 }
 
-// Keeps only exercise `id`'s calls, and those of the exercises it uses, in a recorded
-// --record-exercises file: the judge's app replays them and runs its own code for the others. The
-// used exercises' calls alone go to `upstream` (removed when there are none), for the reference
-// render: so a mistake in 10.2 is judged in 10.2, and 10.3 on the corners it was given.
+// Keeps only exercise `id`'s calls, and those of the exercises it uses (exerciseUses()), in a
+// recorded --record-exercises file: the judge's app replays them and runs its own code for the
+// others. The used exercises' calls alone go to `upstream` (removed when there are none), for the
+// reference render: so a mistake in 10.2 is judged in 10.2, and 10.3 on the corners it was given.
+// False when the file holds no call of `id` (an empty list included: replaying nothing would let
+// the trusted app run its own code).
 static bool keepOnlyCalls(const fs::path& file, const std::string& id, const fs::path& upstream) {
   fs::remove(upstream);
   try {
-    const auto all = nlohmann::json::parse(readFile(file));
-    nlohmann::json calls = nlohmann::json::object(), used = nlohmann::json::object();
-    if (all.at("calls").contains(id)) calls[id] = all.at("calls").at(id);
+    const auto all = parseShallowJson(readFile(file));
+    const auto& recorded = all.at("calls");
+    if (!recorded.contains(id) || !recorded.at(id).is_array() || recorded.at(id).empty()) return false;
+    nlohmann::json calls = {{id, recorded.at(id)}}, used = nlohmann::json::object();
     for (const std::string& u : exerciseUses(id))
-      if (all.at("calls").contains(u)) calls[u] = used[u] = all.at("calls").at(u);
-    std::ofstream(file) << nlohmann::json{{"calls", calls}}.dump();
-    if (!used.empty()) std::ofstream(upstream) << nlohmann::json{{"calls", used}}.dump();
-    return calls.contains(id);
+      if (recorded.contains(u)) calls[u] = used[u] = recorded.at(u);
+    const auto dump = [](const nlohmann::json& j) {
+      return nlohmann::json{{"calls", j}}.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    };
+    std::ofstream(file) << dump(calls);
+    if (!used.empty()) std::ofstream(upstream) << dump(used);
+    return true;
   } catch (const std::exception&) {
     return false;
   }
@@ -277,7 +295,7 @@ static nlohmann::json drawExercise(const std::string& id, const fs::path& out, c
   if (mine.value("code", 128) != 0) return mine;  // the student's app failed: that is the result
   if (!fs::exists(calls) || !keepOnlyCalls(calls, id, out / "upstream.json"))
     throw Error("your lab never ran exercise " + id + " in this scene (its run left no result):\n" +
-                mine.value("log", std::string()));
+                (heldOutJudging() ? std::string("(held-out run)") : mine.value("log", std::string())));
   return runAppJson(out, "WB_STRICT_GL=1 " + isolatedGlsl(id, out), trustedExe(),
                     joined(args, {"--replay-exercises", calls.string()}));
 }
@@ -298,6 +316,7 @@ static ::testing::AssertionResult runIsolated(const std::string& id, const fs::p
   }
   const int code = run.value("code", 128);
   logText = run.value("log", std::string());
+  if (heldOutJudging()) logText = "(the log of a held-out run is not shown)";
   // A shader error names the isolated copy the app read; the student's own file is what to open.
   for (const std::string& file : glslExerciseFiles()) {
     const std::string copy = (out / file).string(), mine = submittedShaderFile(file).string();
@@ -351,8 +370,11 @@ int recordRequestedRuns(const fs::path& requests) {
     }
     if (!request.contains("args")) continue;
     // In the tape's folder: the runner's own, while other exercises' runners may be running too.
-    recordRun(request["key"].get<std::string>(), tapeDir() / ("request-" + std::to_string(k)),
-              request["args"].get<std::vector<std::string>>());
+    try {  // one failed request (malformed, a run that could not be recorded) must not end the others
+      recordRun(request["key"].get<std::string>(), tapeDir() / ("request-" + std::to_string(k)),
+                request["args"].get<std::vector<std::string>>());
+    } catch (const std::exception&) {
+    }
   }
   return 0;
 }

@@ -1,5 +1,7 @@
 #include "tests/harness/tape.hpp"
 
+#include "common/exercise_tape.hpp"
+
 #include "common/shader.hpp"
 
 #include <gtest/gtest.h>
@@ -45,9 +47,9 @@ void openTape(TapeMode mode, const fs::path& dir) {
   std::ifstream in(dir / "tape.jsonl");  // a missing or damaged tape replays as "nothing recorded"
   for (std::string line; std::getline(in, line);) {
     try {
-      json e = json::parse(line);
+      json e = parseShallowJson(line);
       if (e.is_object() && e.contains("key") && e["key"].is_string()) g_entries[e["key"].get<std::string>()] = e;
-    } catch (const json::exception&) {
+    } catch (const std::exception&) {  // malformed, or nested too deep: nothing recorded there
     }
   }
 }
@@ -65,8 +67,12 @@ json observeJson(const std::string& key, const std::function<json()>& produce) {
     if (it == g_entries.end())
       throw Error("the student's build recorded no result here (it crashed, timed out or stopped before it)");
     const json& e = it->second;
-    if (e.contains("not_implemented")) throw NotImplemented(e["not_implemented"].get<std::string>());
-    if (e.contains("error")) throw Error(e["error"].get<std::string>());
+    // Judging held-out tests, the runner's own words are never quoted: they could carry the inputs.
+    const bool quiet = heldOutJudging();
+    if (e.contains("not_implemented"))
+      throw NotImplemented(quiet ? "(held-out test)" : e["not_implemented"].get<std::string>());
+    if (e.contains("error"))
+      throw Error(quiet ? "the exercise failed in a held-out test" : e["error"].get<std::string>());
     return e.value("value", json());
   }
   json entry = {{"key", key}};
@@ -82,11 +88,17 @@ json observeJson(const std::string& key, const std::function<json()>& produce) {
   }
   if (g_mode == TapeMode::Record) {
     std::lock_guard<std::mutex> lock(g_mutex);
-    std::ofstream(g_dir / "tape.jsonl", std::ios::app) << entry.dump() << "\n";
+    std::ofstream(g_dir / "tape.jsonl", std::ios::app)
+        << entry.dump(-1, ' ', false, json::error_handler_t::replace) << "\n";
   }
   if (entry.contains("not_implemented")) throw NotImplemented(entry["not_implemented"].get<std::string>());
   if (entry.contains("error")) throw Error(entry["error"].get<std::string>());
   return entry["value"];
+}
+
+bool heldOutJudging() {
+  const char* held = std::getenv("WB_HELD_OUT");
+  return held && *held && g_mode == TapeMode::Replay;
 }
 
 bool planning() {

@@ -58,6 +58,11 @@ T observe(const std::function<T()>& produce) {
 /// if there is none.
 bool observeFile(const std::string& name, const std::filesystem::path& path);
 
+/// True in a judge that judges held-out tests (WB_HELD_OUT=1, set by the grader): nothing the
+/// runner recorded as text (an exception's message, a log) is quoted, since it could carry the
+/// held-out inputs to a student.
+bool heldOutJudging();
+
 /// True in a judge's planning pass (WB_PLAN=FILE): the held-out tests, which no runner holds, list
 /// what a runner must record for them.
 bool planning();

@@ -1,0 +1,132 @@
+// PASS 2 of lab 10 (scene.frag, and scene_vsm.frag for csm.filter=vsm): each pixel picks its cascade
+// (10.5), looks it up (2x2 PCF, or lab 05's VSM with WB_VSM), and in the band before a split blends
+// with the next cascade (10.6). llvmpipe runs both sides of every branch, even
+// one whose condition is a uniform, so the debug views and options are compiled in by #define
+// (WB_SELECT_MAP, WB_SMOOTH_BLEND, WB_DENSITY, WB_TINT, WB_REGION) instead of switched by uniforms.
+#include "exercise.glsl"
+#include "wb/lighting.glsl"
+#include "wb/outputs.glsl"
+in vec3 v_world;
+in vec3 v_normal;
+in vec2 v_uv;
+in vec3 v_light[4];  // the point in each cascade's light clip space (cascades.vert)
+in float v_depth;    // its view distance
+uniform vec3 u_color;
+uniform sampler2D u_albedo;
+uniform int u_hasTexture;
+uniform float u_alphaCutoff;
+layout(binding = 1) uniform sampler2DArray u_maps;
+layout(binding = 2) uniform sampler2DArrayShadow u_compare;  // the same maps, through a comparing sampler
+uniform mat4 u_cascades[4];
+uniform float u_splits[4];     // the far end of each cascade (view distance)
+uniform float u_splitNear[4];  // the near end
+uniform mat4 u_view;  // (cascades.vert)
+uniform int u_count, u_ready;
+uniform float u_band, u_bias;
+uniform vec3 u_lightDir;
+uniform int u_kernel;            // csm.kernel: PCF taps per side
+uniform vec2 u_uvPerWorld[4];    // map coordinates per world unit, along the map's x and y
+uniform float u_tapWorld;        // the tap spacing: cascade 0's texel, in world units
+uniform int u_region;            // measure.region: 0 all, 1-4 cascade 0-3, 5 near the splits, 6 the rest
+
+#ifdef WB_VSM
+layout(binding = 3) uniform sampler2DArray u_moments;  // the filtered (M1, M2) of each cascade
+uniform float u_minVariance, u_bleeding;
+
+// Lab 05's bound on the lit share (your chebyshevUpperBound and reduceLightBleeding) from cascade
+// i's filtered moments, or 1 outside its map.
+float lookup(int i) {
+  vec3 p = v_light[i] * 0.5 + 0.5;
+  if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return 1.0;
+  vec2 moments = texture(u_moments, vec3(p.xy, float(i))).rg;
+  float bound = chebyshevUpperBound(moments, p.z, u_minVariance);
+  return wbIsTodo(moments.x) || wbIsTodo(bound) ? WB_TODO : reduceLightBleeding(bound, u_bleeding);
+}
+#else
+// The lit share of cascade i's 2x2 texel neighbourhood (the sampler's bilinear comparison, 2x2 PCF),
+// or 1 outside its map.
+float lookup(int i) {
+  vec3 p = v_light[i] * 0.5 + 0.5;
+  if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return 1.0;
+  vec2 step = u_tapWorld * u_uvPerWorld[i];  // the same world spacing in every cascade
+  float lit = 0.0;
+  int r = u_kernel / 2;
+  for (int y = -r; y <= r; ++y)
+    for (int x = -r; x <= r; ++x) lit += texture(u_compare, vec4(p.xy + vec2(x, y) * step, float(i), p.z - u_bias));
+  return lit / float(u_kernel * u_kernel);
+}
+#endif
+
+// Whether cascade i's map holds the point (the blend band may reach past the next cascade's map).
+bool inMap(int i) { return all(lessThanEqual(abs(v_light[i]), vec3(1.0))); }
+
+// debug.cascades: red, green, blue, yellow.
+vec3 cascadeTint(int i) {
+  return i == 0 ? vec3(1.0, 0.35, 0.35) : i == 1 ? vec3(0.35, 1.0, 0.35) : i == 2 ? vec3(0.35, 0.5, 1.0) : vec3(1.0, 1.0, 0.3);
+}
+
+// measure.region: whether --metrics counts this pixel. "Near the splits" is within 10% of the
+// neighbouring cascade's depth range of an inner split, on either side, whatever the blend band.
+bool inRegion(int i, float depth) {
+  if (u_region == 0) return true;
+  if (u_region <= 4) return i == u_region - 1;
+  bool near = false;
+  for (int j = 0; j + 1 < u_count; ++j) {
+    float split = u_splits[j], below = split - u_splitNear[j], above = u_splits[j + 1] - split;
+    near = near || (depth > split - 0.1 * below && depth < split + 0.1 * above);
+  }
+  return near == (u_region == 5);
+}
+
+void main() {
+  vec4 texel = u_hasTexture != 0 ? texture(u_albedo, v_uv) : vec4(1.0);
+  if (texel.a < u_alphaCutoff) discard;
+  vec3 albedo = u_color * texel.rgb;
+  vec3 n = normalize(v_normal);
+  if (!gl_FrontFacing) n = -n;
+  vec3 toLight = -u_lightDir;
+  bool facesLight = dot(n, toLight) > 0.0;
+  float depth = v_depth;
+  vec4 splits = vec4(u_splits[0], u_splits[1], u_splits[2], u_splits[3]);
+#ifdef WB_SELECT_MAP
+  int i = cascadeByMap(v_world, u_cascades, u_count);
+#else
+  int i = cascadeByInterval(depth, splits, u_count);
+#endif
+  float w = i + 1 < u_count ? blendWeight(depth, u_splitNear[i], u_splits[i], u_band) : 0.0;
+  if (u_ready == 0 || i < 0 || wbIsTodo(w)) {  // a stub: show it, never fake a shadow
+    wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
+    return;
+  }
+#ifdef WB_SELECT_MAP
+  if (depth >= u_splits[i]) w = 0.0;  // the map kept a finer cascade past its split: no band there
+#endif
+  if (w > 0.0 && !inMap(i + 1)) w = 0.0;  // a band point outside the next map: this one alone
+#ifdef WB_DENSITY  // the aliasing measure: how many texels of cascade i one pixel spans
+  vec2 t = (v_light[i].xy * 0.5 + 0.5) * vec2(textureSize(u_maps, 0).xy);
+  float texels = max(length(dFdx(t)), length(dFdy(t)));
+  wbWriteOutputs(vec3(clamp(log2(texels) / 8.0 + 0.5, 0.0, 1.0), 0.2, 0.2), texels, v_world, true);
+#else
+#ifdef WB_SMOOTH_BLEND  // both cascades, mixed
+  float visibility = lookup(i);
+  if (w > 0.0) visibility = mix(visibility, lookup(i + 1), w);
+#else  // dithered: the next cascade where w beats a per-pixel threshold (interleaved gradient noise)
+  float threshold = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+  float visibility = lookup(w > threshold ? i + 1 : i);
+#endif
+  if (wbIsTodo(visibility)) {  // csm.filter=vsm before lab 05 is done
+    wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
+    return;
+  }
+  vec3 colour = wbShade(albedo, n, toLight, vec3(1.0), visibility);
+#ifdef WB_TINT
+  colour *= mix(cascadeTint(i), cascadeTint(min(i + 1, 3)), w);
+#endif
+#ifdef WB_REGION
+  bool counted = inRegion(i, depth);
+  colour *= counted ? 1.0 : 0.25;
+  facesLight = facesLight && counted;
+#endif
+  wbWriteOutputs(colour, visibility, v_world, facesLight);
+#endif
+}
