@@ -64,7 +64,7 @@ class BrokenSecondLab(grade.Grader):
             raise KeyError("no tests for you")
         return []
 
-    def grade_exercise(self, lab, e, tests, broken):
+    def grade_exercise(self, lab, e, tests, broken, replay_uses=()):
         return True, [], [], None, False
 
 
