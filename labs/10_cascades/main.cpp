@@ -35,11 +35,15 @@ class CascadeLab : public wb::Lab {
     settings.addChoice("csm.kernel", kernel, {"1", "3", "5", "7"},
                        "PCF taps per side (each a 2x2 comparison), spaced by cascade 0's texel in world units in "
                        "every cascade, so softness stays the same across the splits");
-    settings.addChoice("csm.filter", filter, {"pcf", "vsm"},
-                       "pcf: a comparing lookup per tap; vsm: your lab 05 functions on moments prefiltered per "
-                       "cascade (blur width csm.kernel, in cascade 0's texels, kept in world units)");
-    settings.add("vsm.min_variance", minVariance, 0.0f, 0.001f, "csm.filter=vsm: as in lab 05");
-    settings.add("vsm.bleeding_reduction", bleeding, 0.0f, 0.9f, "csm.filter=vsm: as in lab 05");
+    settings.addChoice("csm.filter", filter, {"pcf", "esm", "vsm", "evsm"},
+                       "pcf: a comparing lookup per tap; esm, vsm, evsm: your functions of lab 04, 05 or 06 on a "
+                       "map prefiltered per cascade (blur width csm.kernel, in cascade 0's texels, kept in world "
+                       "units)");
+    settings.add("esm.c", esmC, 1.0f, 88.0f, "csm.filter=esm: the exponent (lab 04)");
+    settings.add("evsm.c_positive", cPos, 1.0f, 42.0f, "csm.filter=evsm: the positive warp's exponent (lab 06)");
+    settings.add("evsm.c_negative", cNeg, 1.0f, 42.0f, "csm.filter=evsm: the negative warp's exponent (lab 06)");
+    settings.add("vsm.min_variance", minVariance, 0.0f, 0.001f, "csm.filter=vsm or evsm: the smallest variance");
+    settings.add("vsm.bleeding_reduction", bleeding, 0.0f, 0.9f, "csm.filter=vsm or evsm: light-bleeding reduction");
     settings.add("csm.freeze", freeze, "keep the cascades (and their slices) where they are while the camera moves");
     settings.addChoice("measure.region", region, {"all", "c0", "c1", "c2", "c3", "splits", "rest"},
                        "the pixels --metrics counts: all, one cascade, those within 10% of a cascade's range of an "
@@ -82,7 +86,7 @@ class CascadeLab : public wb::Lab {
     // PASS 1: one depth layer per cascade (or lab 05's filtered moments, csm.filter=vsm).
     if (c.ready) {
       if (filter)
-        renderMoments(light, c.matrices);
+        renderFiltered(light, c.matrices);
       else {
         auto timer = timePass("shadow");
         maps.resize(shadowMapSize(), count);
@@ -110,6 +114,8 @@ class CascadeLab : public wb::Lab {
     p.set("u_kernel", 2 * kernel + 1);
     p.set("u_region", region);
     p.set("u_minVariance", minVariance);
+    p.set("u_c", filter == 1 ? esmC : cPos);
+    p.set("u_cNeg", cNeg);
     p.set("u_bleeding", bleeding);
     gpuScene->draw(p);
     glBindSampler(2, 0);
@@ -163,21 +169,31 @@ class CascadeLab : public wb::Lab {
     return c;
   }
 
-  // PASS 1 with csm.filter=vsm: each cascade's moments (lab 05's vsmMoments), blurred by csm.kernel
-  // texels of cascade 0 in world units (fewer texels in the coarser cascades), into one array.
-  void renderMoments(const wb::Light& light, const std::vector<glm::mat4>& matrices) {
-    const float far[4] = {1, 1, 0, 0};  // depth 1: (M1, M2) = (1, 1)
-    if (!momentsProgram) {              // only now: lab 10 must run whatever state lab 05's exercise.glsl is in
-      momentsProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/depth.vert"}, {GL_FRAGMENT_SHADER, "moments_vsm.frag"}});
-      blurProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "wb/blur.frag"}});
+  // PASS 1 with csm.filter=esm, vsm or evsm: each cascade's map by that lab's writer (your functions),
+  // blurred by csm.kernel texels of cascade 0 in world units (fewer texels in the coarser cascades),
+  // copied into one array.
+  void renderFiltered(const wb::Light& light, const std::vector<glm::mat4>& matrices) {
+    const char* writers[] = {"", "moments_esm.frag", "moments_vsm.frag", "moments_evsm.frag"};
+    const GLenum formats[] = {0, GL_R32F, GL_RG32F, GL_RGBA32F};
+    const float far[4][4] = {{},
+                             {std::exp(esmC), 0, 0, 0},
+                             {1, 1, 0, 0},  // the stored values of depth 1
+                             {std::exp(cPos), std::exp(2 * cPos), -std::exp(-cNeg), std::exp(-2 * cNeg)}};
+    wb::Program*& writer = writerPrograms[size_t(filter)];
+    if (!writer) {  // only now: lab 10 must run whatever state labs 04-06's exercise.glsl are in
+      writer = &loadProgram({{GL_VERTEX_SHADER, "wb/depth.vert"}, {GL_FRAGMENT_SHADER, writers[filter]}});
+      if (!blurProgram)
+        blurProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "wb/blur.frag"}});
     }
-    moments.resize(shadowMapSize(), count, GL_RG32F);
+    writer->set("u_c", filter == 1 ? esmC : cPos);
+    writer->set("u_cNeg", cNeg);
+    moments.resize(shadowMapSize(), count, formats[filter]);
     maps.resize(shadowMapSize(), count);  // (the insets and debug views show the depth layers' slot)
     const float width0 = float(2 * kernel + 1) / scaleOf(matrices[0]).x;
     for (int i = 0; i < count; ++i) {
       const int half = int(std::lround(0.5f * (width0 * scaleOf(matrices[size_t(i)]).x - 1)));
-      moments.layer(i).resize(shadowMapSize(), {GL_RG32F, 1 + 2 * std::clamp(half, 0, 3), false, false, false});
-      renderFilteredShadowMap(*momentsProgram, moments.layer(i), far, *blurProgram, light, matrices[size_t(i)]);
+      moments.layer(i).resize(shadowMapSize(), {formats[filter], 1 + 2 * std::clamp(half, 0, 3), false, false, false});
+      renderFilteredShadowMap(*writer, moments.layer(i), far[filter], *blurProgram, light, matrices[size_t(i)]);
       moments.copy(i);
     }
   }
@@ -220,22 +236,21 @@ class CascadeLab : public wb::Lab {
     if (showDensity) defines += "#define WB_DENSITY\n";
     if (showCascades) defines += "#define WB_TINT\n";
     if (region) defines += "#define WB_REGION\n";
-    wb::Program*& p = scenePrograms[defines + (filter ? "vsm" : "")];
-    if (!p)
-      p = &loadProgram(
-          {{GL_VERTEX_SHADER, "cascades.vert"}, {GL_FRAGMENT_SHADER, filter ? "scene_vsm.frag" : "scene.frag"}},
-          defines);
+    const char* entries[] = {"scene.frag", "scene_esm.frag", "scene_vsm.frag", "scene_evsm.frag"};
+    wb::Program*& p = scenePrograms[defines + entries[filter]];
+    if (!p) p = &loadProgram({{GL_VERTEX_SHADER, "cascades.vert"}, {GL_FRAGMENT_SHADER, entries[filter]}}, defines);
     return *p;
   }
 
   static glm::vec3 upFor(const glm::vec3& d) { return std::abs(d.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0); }
   float aspect() const { return float(frameSize().x) / float(std::max(1, frameSize().y)); }
 
-  wb::Program* depthProgram = nullptr;                            // PASS 1
-  wb::Program *momentsProgram = nullptr, *blurProgram = nullptr;  // PASS 1, csm.filter=vsm
-  std::map<std::string, wb::Program*> scenePrograms;              // PASS 2, by #defines
+  wb::Program* depthProgram = nullptr;           // PASS 1
+  std::array<wb::Program*, 4> writerPrograms{};  // PASS 1 of csm.filter=esm, vsm, evsm (by index)
+  wb::Program* blurProgram = nullptr;
+  std::map<std::string, wb::Program*> scenePrograms;  // PASS 2, by #defines
   wb::ShadowMapArray maps;
-  wb::FilteredShadowMapArray moments;  // csm.filter=vsm
+  wb::FilteredShadowMapArray moments;  // csm.filter=esm, vsm, evsm
   wb::Sampler compare;                 // 2x2 PCF in the sampler
   int count = 3;                       // cascades
   int scheme = 2;                      // practical
@@ -250,6 +265,7 @@ class CascadeLab : public wb::Lab {
   int region = 0;                           // measure.region: all
   int filter = 0;                           // pcf
   float minVariance = 2e-5f, bleeding = 0;  // lab 05's defaults
+  float esmC = 80, cPos = 40, cNeg = 5;     // labs 04 and 06
   bool showCascades = false, showDensity = false;
   Cascades frozen;  // what csm.freeze keeps
   int pathStep = 0, matricesStep = -1;

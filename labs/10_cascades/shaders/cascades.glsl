@@ -1,6 +1,6 @@
-// PASS 2 of lab 10 (scene.frag, and scene_vsm.frag for csm.filter=vsm): each pixel picks its cascade
-// (10.5), looks it up (2x2 PCF, or lab 05's VSM with WB_VSM), and in the band before a split blends
-// with the next cascade (10.6). llvmpipe runs both sides of every branch, even
+// PASS 2 of lab 10 (scene.frag; scene_esm/vsm/evsm.frag for csm.filter): each pixel picks its cascade
+// (10.5), looks it up (2x2 PCF, or lab 04's ESM, 05's VSM or 06's EVSM), and in the band before a
+// split blends with the next cascade (10.6). llvmpipe runs both sides of every branch, even
 // one whose condition is a uniform, so the debug views and options are compiled in by #define
 // (WB_SELECT_MAP, WB_SMOOTH_BLEND, WB_DENSITY, WB_TINT, WB_REGION) instead of switched by uniforms.
 #include "exercise.glsl"
@@ -29,18 +29,26 @@ uniform vec2 u_uvPerWorld[4];    // map coordinates per world unit, along the ma
 uniform float u_tapWorld;        // the tap spacing: cascade 0's texel, in world units
 uniform int u_region;            // measure.region: 0 all, 1-4 cascade 0-3, 5 near the splits, 6 the rest
 
-#ifdef WB_VSM
-layout(binding = 3) uniform sampler2DArray u_moments;  // the filtered (M1, M2) of each cascade
-uniform float u_minVariance, u_bleeding;
+#if defined(WB_VSM) || defined(WB_ESM) || defined(WB_EVSM)
+layout(binding = 3) uniform sampler2DArray u_moments;  // each cascade's filtered warp or moments
+uniform float u_minVariance, u_bleeding;               // VSM and EVSM
+uniform float u_c, u_cNeg;                             // ESM's c; EVSM's positive and negative exponents
 
-// Lab 05's bound on the lit share (your chebyshevUpperBound and reduceLightBleeding) from cascade
-// i's filtered moments, or 1 outside its map.
+// The lit share from cascade i's filtered map through your functions of lab 04, 05 or 06, or 1
+// outside its map (WB_TODO until that lab is done).
 float lookup(int i) {
   vec3 p = v_light[i] * 0.5 + 0.5;
   if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return 1.0;
-  vec2 moments = texture(u_moments, vec3(p.xy, float(i))).rg;
-  float bound = chebyshevUpperBound(moments, p.z, u_minVariance);
-  return wbIsTodo(moments.x) || wbIsTodo(bound) ? WB_TODO : reduceLightBleeding(bound, u_bleeding);
+  vec4 m = texture(u_moments, vec3(p.xy, float(i)));
+  if (wbIsTodo(m.x)) return WB_TODO;
+#if defined(WB_ESM)
+  return esmVisibility(log(max(m.x, 1e-37)), p.z, u_c);
+#elif defined(WB_EVSM)
+  return evsmVisibility(m, p.z, u_c, u_cNeg, u_minVariance, u_bleeding, 4);
+#else
+  float bound = chebyshevUpperBound(m.xy, p.z, u_minVariance);
+  return wbIsTodo(bound) ? WB_TODO : reduceLightBleeding(bound, u_bleeding);
+#endif
 }
 #else
 // The lit share of cascade i's 2x2 texel neighbourhood (the sampler's bilinear comparison, 2x2 PCF),
@@ -114,7 +122,7 @@ void main() {
   float threshold = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
   float visibility = lookup(w > threshold ? i + 1 : i);
 #endif
-  if (wbIsTodo(visibility)) {  // csm.filter=vsm before lab 05 is done
+  if (wbIsTodo(visibility)) {  // csm.filter=esm, vsm or evsm before that lab is done
     wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
     return;
   }
