@@ -714,8 +714,11 @@ class Grader:
         the instructor's (a held-out scene) copied beside it, since the runner cannot read them."""
         plan = judged / "plan.jsonl"
         (judged / "empty").mkdir()
-        run_killable([str(judge), f"--gtest_filter={gfilter}", "--judge", str(judged / "empty")], self.timeout,
-                     env=dict(env, WB_PLAN=str(plan)), cwd=judged)
+        code, _, timed_out = run_killable([str(judge), f"--gtest_filter={gfilter}", "--judge", str(judged / "empty")],
+                                            self.timeout, env=dict(env, WB_PLAN=str(plan)), cwd=judged)
+        if timed_out or code < 0:  # a partial plan would read as results the student's build never recorded
+            raise RuntimeError(f"planning the held-out tests {gfilter} {'timed out' if timed_out else 'crashed'} (a "
+                               "fault of the grader: tell the instructor)")
         inputs, lines = tape / "inputs", []
         for line in plan.read_text().splitlines() if plan.exists() else []:
             request = json.loads(line)
