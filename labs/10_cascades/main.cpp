@@ -66,6 +66,7 @@ class CascadeLab : public wb::Lab {
  protected:
   void init() override {
     depthProgram = &loadProgram({{GL_VERTEX_SHADER, "wb/depth.vert"}, {GL_FRAGMENT_SHADER, "wb/depth.frag"}});
+    compare = wb::makeComparisonSampler();
     sceneVariant();  // the defaults' variant now, so a shader error shows at once
     glslExercise("10.5", "exercise.glsl",
                  "cascadeByInterval(1.0, vec4(2.0), 4) < 0 || cascadeByMap(vec3(0.0), mat4[4](mat4(1.0), mat4(1.0), "
@@ -83,13 +84,13 @@ class CascadeLab : public wb::Lab {
     else
       frozen = c;
 
-    // PASS 1: one depth layer per cascade (or lab 05's filtered moments, csm.filter=vsm).
+    // PASS 1: one depth layer per cascade (or a filtered map per cascade, csm.filter=esm, vsm, evsm).
+    maps.resize(shadowMapSize(), count);  // (a filtered run shows this array's slot in the debug views)
     if (c.ready) {
       if (filter)
         renderFiltered(light, c.matrices);
       else {
         auto timer = timePass("shadow");
-        maps.resize(shadowMapSize(), count);
         renderShadowMap(*depthProgram, maps, light, c.matrices);
       }
       wb::LightView shown = maps.describe(light, c.matrices);
@@ -104,7 +105,6 @@ class CascadeLab : public wb::Lab {
     glBindTextureUnit(1, maps.texture());
     glBindTextureUnit(2, maps.texture());
     glBindTextureUnit(3, moments.texture());
-    if (!compare.id()) compare = wb::makeComparisonSampler();
     glBindSampler(2, compare.id());
     setCascadeUniforms(p, c);
     p.set("u_view", camera.view());
@@ -188,7 +188,6 @@ class CascadeLab : public wb::Lab {
     writer->set("u_c", filter == 1 ? esmC : cPos);
     writer->set("u_cNeg", cNeg);
     moments.resize(shadowMapSize(), count, formats[filter]);
-    maps.resize(shadowMapSize(), count);  // (the insets and debug views show the depth layers' slot)
     const float width0 = float(2 * kernel + 1) / scaleOf(matrices[0]).x;
     for (int i = 0; i < count; ++i) {
       const int half = int(std::lround(0.5f * (width0 * scaleOf(matrices[size_t(i)]).x - 1)));

@@ -506,9 +506,10 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
   msg << "\n  diff: " << (out / "diff.png").string()
       << " (red: shadowed where the reference is lit; blue: lit where it is shadowed)"
       << "\n  reference: " << (out / "reference.png").string() << "\n  result: " << (out / "result.png").string();
-  if (varySeed() < 0 && !exerciseUses(id).empty()) {  // check: the golden was drawn with the reference's inputs
+  const std::vector<std::string> uses = varySeed() < 0 ? exerciseUses(id) : std::vector<std::string>{};
+  if (!uses.empty()) {  // check: the golden was drawn with the reference's inputs
     msg << "\n  this scene runs " << id << " on what your";
-    for (const std::string& u : exerciseUses(id)) msg << " " << u;
+    for (const std::string& u : uses) msg << " " << u;
     msg << " returned: if any of those fails its own tests, fix it first (the grader judges " << id
         << " on your inputs against the reference run on the same inputs; this check has only the golden)";
   }

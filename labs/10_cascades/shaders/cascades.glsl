@@ -29,6 +29,9 @@ uniform vec2 u_uvPerWorld[4];    // map coordinates per world unit, along the ma
 uniform float u_tapWorld;        // the tap spacing: cascade 0's texel, in world units
 uniform int u_region;            // measure.region: 0 all, 1-4 cascade 0-3, 5 near the splits, 6 the rest
 
+// Whether cascade i's map holds the point (the blend band may reach past the next cascade's map).
+bool inMap(int i) { return all(lessThanEqual(abs(v_light[i]), vec3(1.0))); }
+
 #if defined(WB_VSM) || defined(WB_ESM) || defined(WB_EVSM)
 layout(binding = 3) uniform sampler2DArray u_moments;  // each cascade's filtered warp or moments
 uniform float u_minVariance, u_bleeding;               // VSM and EVSM
@@ -37,8 +40,8 @@ uniform float u_c, u_cNeg;                             // ESM's c; EVSM's positi
 // The lit share from cascade i's filtered map through your functions of lab 04, 05 or 06, or 1
 // outside its map (WB_TODO until that lab is done).
 float lookup(int i) {
+  if (!inMap(i)) return 1.0;
   vec3 p = v_light[i] * 0.5 + 0.5;
-  if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return 1.0;
   vec4 m = texture(u_moments, vec3(p.xy, float(i)));
   if (wbIsTodo(m.x)) return WB_TODO;
 #if defined(WB_ESM)
@@ -54,8 +57,8 @@ float lookup(int i) {
 // The lit share of cascade i's 2x2 texel neighbourhood (the sampler's bilinear comparison, 2x2 PCF),
 // or 1 outside its map.
 float lookup(int i) {
+  if (!inMap(i)) return 1.0;
   vec3 p = v_light[i] * 0.5 + 0.5;
-  if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return 1.0;
   vec2 step = u_tapWorld * u_uvPerWorld[i];  // the same world spacing in every cascade
   float lit = 0.0;
   int r = u_kernel / 2;
@@ -64,9 +67,6 @@ float lookup(int i) {
   return lit / float(u_kernel * u_kernel);
 }
 #endif
-
-// Whether cascade i's map holds the point (the blend band may reach past the next cascade's map).
-bool inMap(int i) { return all(lessThanEqual(abs(v_light[i]), vec3(1.0))); }
 
 // debug.cascades: red, green, blue, yellow.
 vec3 cascadeTint(int i) {
