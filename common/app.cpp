@@ -67,7 +67,7 @@ void App::loadScene(Lab& lab, const Options& o) {
   if (lab.lightSizeUsed_ && size > 0 && !o.names("light.size")) lab.lightSize_ = size;
 }
 
-int App::main(int argc, char** argv, std::unique_ptr<Lab> lab) {
+int App::runLab(int argc, char** argv, std::unique_ptr<Lab> lab) {
   const std::string exe = fs::path(argv[0]).filename().string();
   RunRecord record;
   record.set("lab", lab->board().number());

@@ -36,7 +36,7 @@ class App {
   /// Runs `lab` with the shared command line: parses it, configures the lab, opens the context,
   /// hosts the lab and renders (or sweeps), then writes the outputs and the record. Returns the
   /// exit code: 0 done, 1 failed, 2 bad input, 3 no OpenGL 4.5 context.
-  static int main(int argc, char** argv, std::unique_ptr<Lab> lab);
+  static int runLab(int argc, char** argv, std::unique_ptr<Lab> lab);
   /// Applies the command line's --set, checks its --compare and --sweep values (CPU only, so bad
   /// input fails before any window opens); throws wb::UsageError.
   static void configureSettings(Lab& lab, const Options& options);

@@ -165,7 +165,8 @@ class Lab {
   int lightIndex = 0;                  ///< which scene light casts shadows (setting light.index)
 
  private:
-  friend class App;  // the host: it loads the scene, calls the hooks and reads the shared state
+  friend class App;        // the host: it loads the scene, calls the hooks and reads the shared state
+  friend class HostedLab;  // a lab inside another lab (the showcase)
   bool runExercise(const std::string& id, const std::function<nlohmann::json()>& call,
                    const std::function<void(const nlohmann::json&)>& replay);
   std::string defaultScene_;
@@ -193,11 +194,16 @@ class Lab {
 template <class T>
 int run(int argc, char** argv);
 
+/// Set by a program that hosts labs (the showcase, which compiles each lab's main.cpp with main
+/// renamed): while it is set, run<T>() puts a new T here instead of running it.
+extern std::unique_ptr<Lab>* g_hostedLab;
+
 }  // namespace wb
 
 #include "common/app.hpp"
 
 template <class T>
 int wb::run(int argc, char** argv) {
-  return App::main(argc, argv, std::make_unique<T>());
+  if (g_hostedLab) return *g_hostedLab = std::make_unique<T>(), 0;
+  return App::runLab(argc, argv, std::make_unique<T>());
 }

@@ -46,16 +46,16 @@ std::string accepted(const Setting& s) {
 }  // namespace
 
 void Settings::add(const std::string& n, float& v, float min, float max, const std::string& help) {
-  settings_.push_back({n, help, Setting::Kind::Float, &v, min, max, {}});
+  settings_.push_back({n, help, Setting::Kind::Float, &v, min, max, {}, {}});
 }
 void Settings::add(const std::string& n, int& v, int min, int max, const std::string& help) {
-  settings_.push_back({n, help, Setting::Kind::Int, &v, float(min), float(max), {}});
+  settings_.push_back({n, help, Setting::Kind::Int, &v, float(min), float(max), {}, {}});
 }
 void Settings::add(const std::string& n, bool& v, const std::string& help) {
-  settings_.push_back({n, help, Setting::Kind::Bool, &v, 0, 1, {}});
+  settings_.push_back({n, help, Setting::Kind::Bool, &v, 0, 1, {}, {}});
 }
 void Settings::addChoice(const std::string& n, int& v, std::vector<std::string> choices, const std::string& help) {
-  settings_.push_back({n, help, Setting::Kind::Choice, &v, 0, float(choices.size() - 1), std::move(choices)});
+  settings_.push_back({n, help, Setting::Kind::Choice, &v, 0, float(choices.size() - 1), std::move(choices), {}});
 }
 
 const Setting& Settings::find(const std::string& name) const {
@@ -97,6 +97,18 @@ void Settings::assign(const std::string& a) {
       if (it == s.choices.end()) throw bad();
       *static_cast<int*>(s.value) = int(it - s.choices.begin());
     }
+  }
+  if (const auto changed = s.changed) changed();  // (a copy: it may replace this list)
+}
+
+void Settings::onChange(const std::string& name, std::function<void()> f) {
+  const_cast<Setting&>(find(name)).changed = std::move(f);
+}
+
+void Settings::include(const Settings& other, const std::function<bool(const Setting&)>& keep) {
+  for (const auto& s : other.settings_) {
+    const bool known = std::any_of(settings_.begin(), settings_.end(), [&](const Setting& t) { return t.name == s.name; });
+    if (!known && keep(s)) settings_.push_back(s);
   }
 }
 

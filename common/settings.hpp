@@ -2,6 +2,7 @@
 /// Named lab settings: the same values the UI edits, `--set key=value` assigns and
 /// `--list-settings` prints. Labs register their tunables once, with a range and a one-line help.
 #pragma once
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -19,6 +20,7 @@ struct Setting {
   float min = 0;                     ///< lower bound for Float and Int
   float max = 1;                     ///< upper bound for Float and Int
   std::vector<std::string> choices;  ///< names for Choice (the int is the index)
+  std::function<void()> changed;     ///< called after assign() sets it (see Settings::onChange)
 };
 
 /// The settings registry of one lab.
@@ -33,6 +35,12 @@ class Settings {
   /// Registers an int chosen by name from `choices`.
   void addChoice(const std::string& name, int& v, std::vector<std::string> choices, const std::string& help);
 
+  /// Calls `f` after every assign() of setting `name`, so that a host can follow it at once (the
+  /// showcase adopts the chosen technique's settings before the next --set is applied).
+  void onChange(const std::string& name, std::function<void()> f);
+  /// Appends a copy of every setting of `other` that `keep` accepts and whose name is not here yet;
+  /// the copies point at `other`'s variables (the showcase shows a hosted lab's settings as its own).
+  void include(const Settings& other, const std::function<bool(const Setting&)>& keep);
   /// Applies "key=value"; throws wb::UsageError saying what is accepted.
   void assign(const std::string& assignment);
   /// The current value of a setting as text (what assign() accepts); throws wb::UsageError if unknown.

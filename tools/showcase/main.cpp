@@ -1,0 +1,132 @@
+// The showcase: every technique of the ten labs on one scene, in one window (./workbook showcase).
+// ---------------------------------------------------------------------------------------------
+// Each technique is a lab's own solution, hosted (common/hosted_lab.hpp): nothing is copied here.
+// showcase.technique switches live and keeps the camera; the shared split screen compares any two
+// techniques (compare showcase.technique) or two settings of one; "ray_traced" is the exact
+// visibility as a render mode, timed like the others; "Measure" compares any of them with it (and
+// with the area-light reference, since the scene's spot light has a size).
+// ./workbook showcase --table sweeps every technique with --metrics into one table.
+#include "common/hosted_lab.hpp"
+
+#include <imgui.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace wb::showcase {
+extern const std::vector<std::pair<std::string, HostedLab::MainFunction>> kLabMains;  // generated
+}
+
+namespace {
+
+// One row of the showcase: a lab's solution with some of its settings. The scene's light 1 is a spot
+// light with a size, light 2 a point light (lab 08 takes the first point light) and light 3 a sun
+// (cascades are for directional lights).
+struct Technique {
+  const char* name;               // showcase.technique's value
+  const char* lab;                // the lab whose solution draws it
+  std::vector<std::string> sets;  // its settings in that lab
+  const char* kernelKey;          // the lab's filter-width setting that showcase.kernel sets ("": none)
+};
+
+const std::vector<Technique> kTechniques = {
+    {"hard", "01_depth_map", {}, ""},
+    {"slope_bias", "02_bias", {"bias.method=slope"}, "pcf.kernel"},
+    {"pcf", "03_pcf", {"pcf.method=grid"}, "pcf.kernel"},
+    {"esm", "04_esm", {}, "prefilter.kernel"},
+    {"vsm", "05_vsm", {}, "prefilter.kernel"},
+    {"evsm", "06_evsm", {}, "prefilter.kernel"},
+    {"msm", "06_evsm", {"evsm.technique=msm"}, "prefilter.kernel"},
+    {"pcss", "07_pcss", {}, ""},
+    {"cube_map", "08_cube_maps", {"cube.filter=pcf"}, ""},
+    {"volumes", "09_shadow_volumes", {}, ""},
+    {"cascades", "10_cascades", {"light.index=2", "csm.shadow_distance=40"}, "csm.kernel"},
+    {"ray_traced", "09_shadow_volumes", {"shadow.technique=ray_traced"}, ""},
+};
+
+const std::vector<std::string> kKernels = {"lab", "1", "3", "5", "7"};
+const std::vector<std::string> kMapSizes = {"lab", "512", "1024", "2048", "4096"};
+
+wb::HostedLab::MainFunction mainOf(const std::string& lab) {
+  for (const auto& [name, f] : wb::showcase::kLabMains)
+    if (name == lab) return f;
+  throw wb::Error("the showcase was built without lab " + lab);
+}
+
+class Showcase : public wb::Lab {
+ public:
+  Showcase() : Lab("scenes/showcase.json", wb::ShadowKind::Geometry) {
+    std::vector<std::string> names;
+    for (const auto& t : kTechniques) names.push_back(t.name);
+    settings.addChoice("showcase.technique", technique, names,
+                       "the technique drawn: a lab's solution (compare two with the split screen)");
+    settings.addChoice("showcase.kernel", kernel, kKernels,
+                       "filter width set in every technique that has one (lab: each lab's own setting)");
+    settings.addChoice("showcase.map_size", mapSize, kMapSizes,
+                       "shadow.map_size set in every technique with a map (lab: each lab's own setting)");
+    own.include(settings, [](const wb::Setting& s) { return s.name != "alpha.cutoff" && s.name != "light.index"; });
+    own.onChange("showcase.technique", [this] { adopt(); });
+    for (const auto& t : kTechniques) hosted.push_back(std::make_unique<wb::HostedLab>(t.lab, mainOf(t.lab), t.sets));
+    frameMs.assign(kTechniques.size(), 0.0);
+    adopt();
+  }
+
+ protected:
+  void init() override {}
+
+  void update(float dt) override {
+    if (shown != technique) adopt();  // (the settings panel changed it)
+    double& ms = frameMs[size_t(technique)];
+    ms = ms == 0 ? dt * 1000.0 : 0.9 * ms + 0.1 * dt * 1000.0;
+    lastDt = dt;
+  }
+
+  void render() override {
+    wb::HostedLab& h = *hosted[size_t(technique)];
+    const Technique& t = kTechniques[size_t(technique)];
+    if (kernel > 0 && *t.kernelKey) h.lab().tunables().assign(std::string(t.kernelKey) + "=" + kKernels[size_t(kernel)]);
+    if (mapSize > 0 && hasSetting(h, "shadow.map_size"))
+      h.lab().tunables().assign("shadow.map_size=" + kMapSizes[size_t(mapSize)]);
+    h.render(*this, lastDt);
+  }
+
+  void ui() override {
+    ImGui::Separator();
+    ImGui::TextUnformatted("techniques (frame ms while shown)");
+    for (size_t k = 0; k < kTechniques.size(); ++k) {
+      const std::string row = std::string(kTechniques[k].name) + "  (lab " + std::string(kTechniques[k].lab, 2) + ")";
+      if (ImGui::Selectable(row.c_str(), int(k) == technique, 0, ImVec2(190, 0))) technique = int(k), adopt();
+      ImGui::SameLine(200);
+      if (frameMs[k] > 0)
+        ImGui::Text("%.1f ms", frameMs[k]);
+      else
+        ImGui::TextUnformatted("-");
+    }
+    hosted[size_t(technique)]->ui();
+  }
+
+ private:
+  // The settings shown are the showcase's own and the chosen technique's (they write its lab's values).
+  void adopt() {
+    settings = own;
+    settings.include(hosted[size_t(technique)]->lab().tunables(), wb::HostedLab::shown);
+    shown = technique;
+  }
+  static bool hasSetting(wb::HostedLab& h, const std::string& name) {
+    for (const auto& s : h.lab().tunables().all())
+      if (s.name == name) return true;
+    return false;
+  }
+
+  std::vector<std::unique_ptr<wb::HostedLab>> hosted;  // one per technique, in kTechniques' order
+  wb::Settings own;                                    // showcase.* and camera.bookmark
+  std::vector<double> frameMs;                         // per technique, smoothed
+  int technique = 2, shown = -1;                       // pcf
+  int kernel = 2, mapSize = 2;                         // 3 taps, 1024 texels: seed 000's defaults
+  float lastDt = 1.0f / 60;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) { return wb::run<Showcase>(argc, argv); }
