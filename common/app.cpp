@@ -10,12 +10,10 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
-#include <stb_image.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <ctime>
 #include <iostream>
 
 namespace fs = std::filesystem;
@@ -162,6 +160,16 @@ void App::host(std::unique_ptr<Lab> lab) {
     const std::string title = "Lab " + lab_->board().number() + ": " + lab_->board().title();
     glfwSetWindowTitle(ctx_->window(), title.c_str());
   }
+  presenter_.reset(), step_ = 0;
+  const fs::path demo = fs::path(variant::kLabDir) / "demo.json";
+  try {
+    if (fs::exists(demo)) presenter_ = std::make_unique<Presenter>(demo, lab_->settings);
+  } catch (const UsageError& e) {  // a window still runs without its demo; --demo-step does not
+    if (options_.demoStep > 0) throw;
+    lab_->warn(e.what());
+  }
+  if (options_.demoStep > 0 && !presenter_) throw UsageError("--demo-step: " + demo.string() + " does not exist");
+  if (options_.demoStep > 0) showStep(options_.demoStep);
   lab_->init();
   lab_->board_.probe();
   // A window checks the exercises in the background (a headless run is what the checks start).
@@ -171,20 +179,6 @@ void App::host(std::unique_ptr<Lab> lab) {
     checks_ = std::make_unique<LiveChecks>(std::string(variant::kLabExe) + "_tests");
     checks_->start();
   }
-}
-
-void App::loadPicture() {
-  picture_ = Texture(), pictureSize_ = glm::ivec2(0);
-  const fs::path file = lab_->board().picture();
-  std::error_code ec;
-  if (!imgui_ || file.empty() || !fs::is_regular_file(file, ec)) return;
-  int w = 0, h = 0, n = 0;
-  unsigned char* px = stbi_load(file.string().c_str(), &w, &h, &n, 4);
-  if (!px) return;  // (a missing or broken picture only leaves the panel without it)
-  picture_ = makeTexture2D(GL_RGBA8, w, h, GL_LINEAR);
-  glTextureSubImage2D(picture_.id(), 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, px);
-  stbi_image_free(px);
-  pictureSize_ = {w, h};
 }
 
 void App::loop() {
@@ -210,6 +204,7 @@ void App::loop() {
       lab_->warn("OpenGL error: " + e);
     }
     if (options_.metrics && imgui_ && frameIndex_ == 0) measureNow(true);  // a window shows it as an overlay
+    if (measureStep_ && imgui_) measureStep_ = false, stepNumbers_ = Presenter::numbersLine(measureNow(false));
     ++frameIndex_;
   }
 }
@@ -217,47 +212,13 @@ void App::loop() {
 void App::frame(float dt) {
   if (imgui_) beginUiFrame();
   hotReload();
+  uploadPresentation();
   lab_->update(dt);
   target_.resize(frameSize_);
   drawLab();
   // Shared debug views, drawn into the frame target so screenshots and headless runs show them.
   debug_->draw(lab_->debug_, lab_->light_, lab_->viewProj(), target_, shell_.showHeatmap ? heatmap_.id() : 0);
   if (imgui_) presentWindow();
-}
-
-void App::beginUiFrame() {
-  ImGui_ImplOpenGL3_NewFrame();
-  ImGui_ImplGlfw_NewFrame();
-  ImGui::NewFrame();
-  GLFWwindow* win = ctx_->window();
-  const ImGuiIO& io = ImGui::GetIO();
-  glm::dvec2 mouse;
-  glfwGetCursorPos(win, &mouse.x, &mouse.y);
-  if (!io.WantCaptureMouse) {  // never steal the mouse from a widget
-    if (glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS && mouse != lastMouse_) {
-      lab_->camera.orbit(float(mouse.x - lastMouse_.x), float(mouse.y - lastMouse_.y));
-      shell_.showHeatmap = false;  // it was measured for the old view
-    }
-    lab_->camera.zoom(io.MouseWheel);
-  }
-  lastMouse_ = mouse;
-  if (!io.WantCaptureKeyboard) handleKeys();
-  frameSize_ = glm::max(ctx_->framebufferSize(), glm::ivec2(16));
-}
-
-void App::handleKeys() {
-  GLFWwindow* win = ctx_->window();
-  auto pressed = [&](int key) {  // true once per press, so holding a key does not repeat
-    const bool down = glfwGetKey(win, key) == GLFW_PRESS, was = keyDown_[key];
-    keyDown_[key] = down;
-    return down && !was;
-  };
-  Lab& lab = *lab_;
-  for (int k = 0; k < 9; ++k)
-    if (pressed(GLFW_KEY_1 + k) && k < int(lab.scene.cameras.size()))
-      lab.bookmark_ = k + 1, lab.camera.pose = lab.scene.cameras[size_t(k)];
-  if (pressed(GLFW_KEY_F12) || pressed(GLFW_KEY_P)) screenshotRequested_ = true;
-  if (pressed(GLFW_KEY_H)) shell_.hidePanels = !shell_.hidePanels;
 }
 
 void App::hotReload() {
@@ -296,57 +257,6 @@ void App::drawLab() {
     label_.draw(said, {16, size.y - int(44 * scale)}, size, scale);  // below the panels, which say it too
     label_.draw(where, {16, size.y - int(22 * scale)}, size, scale);
   }
-}
-
-void App::presentWindow() {
-  const glm::ivec2 size = target_.size();
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, target_.framebuffer());
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-  {
-    auto timer = timers_.scope("blit");  // (a window's extra passes are timed too: ./workbook bench NN --window)
-    glBlitFramebuffer(0, 0, size.x, size.y, 0, 0, size.x, size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-  }
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glViewport(0, 0, size.x, size.y);
-  Lab& lab = *lab_;
-  const int bookmark = lab.bookmark_;
-  auto labUi = [&] {  // the shared settings are applied before the lab's own widgets read them
-    if (lab.bookmark_ != bookmark && lab.bookmark_ <= int(lab.scene.cameras.size()))
-      lab.camera.pose = lab.scene.cameras[size_t(lab.bookmark_ - 1)];
-    lab.lightIndex = std::min(lab.lightIndex, int(lab.scene.lights.size()) - 1);
-    lab.ui();
-  };
-  drawShell({lab.board_, checks_.get(), timers_, lab.programs_, lab.warnings_, lab.settings, size, picture_.id(),
-             pictureSize_, labUi},
-            shell_);
-  if (shell_.measureRequested) shell_.measureRequested = false, measureNow(true);
-  ImGui::Render();
-  {
-    auto timer = timers_.scope("panels");
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-  }
-  // In a window, --screenshot captures the last frame as the user sees it, UI included.
-  const bool lastFrame = options_.frames > 0 && frameIndex_ == options_.frames - 1 && !options_.screenshot.empty();
-  if (screenshotRequested_ || lastFrame) {
-    screenshotRequested_ = false;
-    char stamp[32];
-    const std::time_t t = std::time(nullptr);
-    std::strftime(stamp, sizeof stamp, "%Y%m%d_%H%M%S", std::localtime(&t));
-    saveWindowScreenshot(lastFrame ? options_.screenshot
-                                   : "screenshots/lab" + lab.board().number() + "_" + stamp + ".png");
-  }
-  ctx_->endFrame();
-}
-
-void App::saveWindowScreenshot(const std::string& path) {
-  const glm::ivec2 size = target_.size();
-  std::vector<uint8_t> px(size_t(size.x) * size_t(size.y) * 4);
-  glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
-  writePng(path, size.x, size.y, px);
-  shell_.lastScreenshot = path;
-  written_.emplace_back("screenshot", path);
-  say("wrote " + fs::absolute(path).string());
 }
 
 MeasureResult App::measureNow(bool report) {
@@ -410,7 +320,43 @@ void App::finish(RunRecord& record) {
   record.set("exercises", lab_->board().toJson());
   record.set("measurement", lastMeasure_ ? lastMeasure_->toJson() : nlohmann::json());
   record.set("warnings", lab_->warnings_);
+  if (step_ > 0) {
+    const DemoStep& s = presenter_->step(step_);
+    record.set("demo_step", {{"step", step_},
+                             {"title", s.title},
+                             {"caption", s.caption},
+                             {"numbers", lastMeasure_ ? Presenter::numbersLine(*lastMeasure_) : ""}});
+  }
   for (const auto& [kind, path] : written_) record.addOutput(kind, path);
+}
+
+void App::showStep(int k) {
+  Lab& lab = *lab_;
+  step_ = 0, measureStep_ = false, stepNumbers_.clear();
+  if (k == 0 || !presenter_) return;
+  const DemoStep& s = presenter_->apply(k, lab.settings);
+  const std::string where = "demo step " + std::to_string(k) + " (\"" + s.title + "\"): ";
+  if (s.bookmark > int(lab.scene.cameras.size()))
+    throw UsageError(where + "bookmark " + std::to_string(s.bookmark) + " but the scene has " +
+                     std::to_string(lab.scene.cameras.size()));
+  if (s.bookmark > 0) lab.bookmark_ = s.bookmark, lab.camera.pose = lab.scene.cameras[size_t(s.bookmark - 1)];
+  if (s.compare.on) {  // both values must exist before a frame is split
+    const std::string keep = lab.settings.value(s.compare.key);
+    for (const auto& v : {s.compare.a, s.compare.b}) lab.settings.assign(s.compare.key + "=" + v);
+    lab.settings.assign(s.compare.key + "=" + keep);
+  }
+  shell_.compare = s.compare, shell_.showHeatmap = false;
+  step_ = k, measureStep_ = s.measure;
+  if (s.measure && ctx_->headless()) options_.metrics = true;
+  say("step " + std::to_string(k) + "/" + std::to_string(presenter_->count()) + ": " + s.title);
+}
+
+// present.* reach every camera pass through one uniform block (shaders/wb/outputs.glsl).
+void App::uploadPresentation() {
+  const int values[4] = {lab_->present_.srgb ? 1 : 0, lab_->present_.grid ? 1 : 0, 0, 0};
+  if (!presentation_.id()) presentation_ = makeBuffer(sizeof values, nullptr);
+  glNamedBufferSubData(presentation_.id(), 0, sizeof values, values);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 7, presentation_.id());
 }
 
 void App::say(const std::string& text) const {

@@ -12,12 +12,14 @@
 #include "common/label.hpp"
 #include "common/live_checks.hpp"
 #include "common/measurement.hpp"
+#include "common/presenter.hpp"
 #include "common/run_record.hpp"
 #include "common/shell_ui.hpp"
 #include "common/split_screen.hpp"
 
 #include <glm/glm.hpp>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -62,6 +64,9 @@ class App {
   int sweep();
   /// Measures after the loop if asked, writes the requested files, and fills `record`.
   void finish(RunRecord& record);
+  /// Shows presenter step `k` of the lab's demo.json (from 1; 0 leaves presenter mode); throws
+  /// wb::UsageError for a step that does not exist or sets what the lab does not have.
+  void showStep(int k);
   /// The frame target the hosted lab draws into (what the last frame showed).
   const FrameTarget& target() const { return target_; }
 
@@ -72,6 +77,8 @@ class App {
   void drawLab();
   void presentWindow();
   void saveWindowScreenshot(const std::string& path);
+  void stepKeys(const std::function<bool(int)>& pressed);
+  void uploadPresentation();
   MeasureResult measureNow(bool report);
   void say(const std::string& text) const;
 
@@ -89,9 +96,14 @@ class App {
   Texture picture_;  // the handout's picture of the finished lab (a window only)
   glm::ivec2 pictureSize_{0};
   std::unique_ptr<LiveChecks> checks_;  // the exercises' fast checks, in a window
+  std::unique_ptr<Presenter> presenter_;  // the lab's demo.json, if it has one
+  Buffer presentation_;                   // present.* for shaders/wb/outputs.glsl (binding 7)
   std::unique_ptr<Lab> lab_;            // declared last: destroyed first
 
   ShellState shell_;
+  int step_ = 0;              // the presenter step shown (0: not presenting)
+  bool measureStep_ = false;  // the step asks for numbers: measure after its first frame
+  std::string stepNumbers_;   // and show them in the caption band
   LightView sides_[2];
   std::optional<MeasureResult> lastMeasure_;
   std::vector<std::pair<std::string, std::string>> written_;  // (kind, path) of files written

@@ -26,14 +26,14 @@ glm::ivec2 parseSize(const std::string& v) {
   return s;
 }
 
-int parseFrames(const std::string& v) {
+int parseCount(const char* option, const std::string& v) {
   try {
     size_t used = 0;
     const int n = std::stoi(v, &used);
     if (used == v.size() && n >= 1) return n;
   } catch (...) {
   }
-  throw UsageError("bad --frames '" + v + "': expected a whole number of at least 1");
+  throw UsageError(std::string("bad ") + option + " '" + v + "': expected a whole number of at least 1");
 }
 
 long long parseSeed(const std::string& v) {
@@ -79,7 +79,7 @@ const OptionSpec kOptions[] = {
     {"--set", "key=value", "change a setting; --list-settings shows them all",
      [](Options& o, const std::string& v) { o.sets.push_back(v); }},
     {"--frames", "N", "frames to render before writing outputs and exiting",
-     [](Options& o, const std::string& v) { o.frames = parseFrames(v); }},
+     [](Options& o, const std::string& v) { o.frames = parseCount("--frames", v); }},
     {"--screenshot", "F.png", "write the final frame as PNG (or JPEG, for a name ending in .jpg)",
      [](Options& o, const std::string& v) { o.screenshot = imagePath("--screenshot", v); }},
     {"--dump-visibility", "F.pfm", "write per-pixel light visibility (1 lit, 0 shadowed) as a float PFM",
@@ -95,6 +95,10 @@ const OptionSpec kOptions[] = {
      [](Options& o, const std::string& v) { o.sweeps.push_back(parseSweep(v)); }},
     {"--sweep-csv", "F.csv", "with --sweep: also write the table as CSV",
      [](Options& o, const std::string& v) { o.sweepCsv = v; }},
+    {"--demo-step", "N",
+     "presenter step N of the lab's demo.json: its settings, camera and split screen (in a window, Page Down/Up "
+     "step on)",
+     [](Options& o, const std::string& v) { o.demoStep = parseCount("--demo-step", v); }},
     {"--compare", "key=a,b", "split screen: the left half with key=a, the right half with key=b",
      [](Options& o, const std::string& v) { o.compare = parseCompare(v); }},
     {"--record", "F.json", "write the run's result as JSON: exercise states, measurements, files written",

@@ -185,6 +185,10 @@ class Lab {
   int lightSamples_ = 1;        // index into 16, 64, 256
   float alphaCutoff_ = 0.5f;
   int bookmark_ = 1;  // counted from 1, as the keys are
+  struct {
+    bool srgb = false;  // present.srgb: encode the colour for the screen (the visibility is untouched)
+    bool grid = false;  // present.grid: a faint world-unit grid on the ground
+  } present_;
   std::list<Program> programs_;
   std::vector<std::string> warnings_;
 };

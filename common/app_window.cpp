@@ -1,0 +1,142 @@
+// The app's window side: the handout's picture, input (the mouse, bookmarks, presenter steps),
+// the ImGui shell over the frame, the presenter's caption band, and window screenshots.
+#include "common/app.hpp"
+
+#include "common/context.hpp"
+#include "common/image.hpp"
+#include "common/lab.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+#include <stb_image.h>
+
+#include <ctime>
+
+namespace fs = std::filesystem;
+
+namespace wb {
+void App::loadPicture() {
+  picture_ = Texture(), pictureSize_ = glm::ivec2(0);
+  const fs::path file = lab_->board().picture();
+  std::error_code ec;
+  if (!imgui_ || file.empty() || !fs::is_regular_file(file, ec)) return;
+  int w = 0, h = 0, n = 0;
+  unsigned char* px = stbi_load(file.string().c_str(), &w, &h, &n, 4);
+  if (!px) return;  // (a missing or broken picture only leaves the panel without it)
+  picture_ = makeTexture2D(GL_RGBA8, w, h, GL_LINEAR);
+  glTextureSubImage2D(picture_.id(), 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  stbi_image_free(px);
+  pictureSize_ = {w, h};
+}
+
+void App::beginUiFrame() {
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  GLFWwindow* win = ctx_->window();
+  const ImGuiIO& io = ImGui::GetIO();
+  glm::dvec2 mouse;
+  glfwGetCursorPos(win, &mouse.x, &mouse.y);
+  if (!io.WantCaptureMouse) {  // never steal the mouse from a widget
+    if (glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS && mouse != lastMouse_) {
+      lab_->camera.orbit(float(mouse.x - lastMouse_.x), float(mouse.y - lastMouse_.y));
+      shell_.showHeatmap = false;  // it was measured for the old view
+    }
+    lab_->camera.zoom(io.MouseWheel);
+  }
+  lastMouse_ = mouse;
+  if (!io.WantCaptureKeyboard) handleKeys();
+  const glm::ivec2 window = ctx_->framebufferSize();
+  frameSize_ = glm::max(window, glm::ivec2(16));
+  if (step_ > 0) frameSize_.y = std::max(16, window.y - Presenter::bandHeight(window));  // the caption's band
+}
+
+void App::handleKeys() {
+  GLFWwindow* win = ctx_->window();
+  auto pressed = [&](int key) {  // true once per press, so holding a key does not repeat
+    const bool down = glfwGetKey(win, key) == GLFW_PRESS, was = keyDown_[key];
+    keyDown_[key] = down;
+    return down && !was;
+  };
+  Lab& lab = *lab_;
+  for (int k = 0; k < 9; ++k)
+    if (pressed(GLFW_KEY_1 + k) && k < int(lab.scene.cameras.size()))
+      lab.bookmark_ = k + 1, lab.camera.pose = lab.scene.cameras[size_t(k)];
+  if (pressed(GLFW_KEY_F12) || pressed(GLFW_KEY_P)) screenshotRequested_ = true;
+  if (pressed(GLFW_KEY_H)) shell_.hidePanels = !shell_.hidePanels;
+  stepKeys(pressed);
+}
+
+// Presenter mode: Page Down / Right the next step, Page Up / Left the one before, Escape leaves.
+void App::stepKeys(const std::function<bool(int)>& pressed) {
+  const bool next = pressed(GLFW_KEY_PAGE_DOWN) | pressed(GLFW_KEY_RIGHT);
+  const bool back = pressed(GLFW_KEY_PAGE_UP) | pressed(GLFW_KEY_LEFT);
+  const bool leave = pressed(GLFW_KEY_ESCAPE);
+  if (!presenter_ || !(next || back || leave)) return;
+  const int k = leave ? 0 : std::clamp(step_ + (next ? 1 : -1), 1, presenter_->count());
+  try {
+    showStep(k);
+  } catch (const UsageError& e) {
+    lab_->warn(e.what());
+  }
+}
+
+void App::presentWindow() {
+  const glm::ivec2 size = target_.size(), window = ctx_->framebufferSize();
+  const int band = step_ > 0 ? std::max(0, window.y - size.y) : 0;  // the presenter's caption, below
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, target_.framebuffer());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  {
+    auto timer = timers_.scope("blit");  // (a window's extra passes are timed too: ./workbook bench NN --window)
+    glBlitFramebuffer(0, 0, size.x, size.y, 0, band, size.x, band + size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, window.x, window.y);
+  Lab& lab = *lab_;
+  const int bookmark = lab.bookmark_;
+  auto labUi = [&] {  // the shared settings are applied before the lab's own widgets read them
+    if (lab.bookmark_ != bookmark && lab.bookmark_ <= int(lab.scene.cameras.size()))
+      lab.camera.pose = lab.scene.cameras[size_t(lab.bookmark_ - 1)];
+    lab.lightIndex = std::min(lab.lightIndex, int(lab.scene.lights.size()) - 1);
+    lab.ui();
+  };
+  if (step_ == 0)  // presenting: the picture and its caption, no panels
+    drawShell({lab.board_, checks_.get(), timers_, lab.programs_, lab.warnings_, lab.settings, size, picture_.id(),
+               pictureSize_, labUi},
+              shell_);
+  if (shell_.measureRequested) shell_.measureRequested = false, measureNow(true);
+  ImGui::Render();
+  {
+    auto timer = timers_.scope("panels");
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  }
+  if (step_ > 0) presenter_->drawBand(step_, measureStep_ ? "measuring..." : stepNumbers_, window);
+  // In a window, --screenshot captures the last frame as the user sees it, UI included.
+  const bool lastFrame = options_.frames > 0 && frameIndex_ == options_.frames - 1 && !options_.screenshot.empty();
+  if (screenshotRequested_ || lastFrame) {
+    screenshotRequested_ = false;
+    char stamp[32];
+    const std::time_t t = std::time(nullptr);
+    std::strftime(stamp, sizeof stamp, "%Y%m%d_%H%M%S", std::localtime(&t));
+    saveWindowScreenshot(lastFrame ? options_.screenshot
+                                   : "screenshots/lab" + lab.board().number() + "_" + stamp + ".png");
+  }
+  ctx_->endFrame();
+}
+
+void App::saveWindowScreenshot(const std::string& path) {
+  const glm::ivec2 size = ctx_->framebufferSize();  // the window as the user sees it
+  std::vector<uint8_t> px(size_t(size.x) * size_t(size.y) * 4);
+  glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
+  writePng(path, size.x, size.y, px);
+  shell_.lastScreenshot = path;
+  written_.emplace_back("screenshot", path);
+  say("wrote " + fs::absolute(path).string());
+}
+
+
+}  // namespace wb

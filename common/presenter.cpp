@@ -1,0 +1,173 @@
+#include "common/presenter.hpp"
+
+#include "common/error.hpp"
+#include "common/measurement.hpp"
+#include "common/settings.hpp"
+#include "common/shader.hpp"
+#include "common/strf.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <sstream>
+
+namespace wb {
+namespace {
+
+// A setting's value as demo.json may write it: "5", 5, 0.5 or true all mean what --set means.
+std::string valueText(const nlohmann::json& v) {
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
+  if (v.is_number()) return v.dump();
+  throw std::runtime_error("a setting's value must be a string, a number or true/false, not " + v.dump());
+}
+
+DemoStep readStep(const nlohmann::json& s, const std::vector<std::string>& common) {
+  DemoStep d;
+  d.title = s.at("title").get<std::string>();
+  d.caption = s.at("caption").get<std::string>();
+  d.sets = common;
+  const nlohmann::json sets = s.value("settings", nlohmann::json::object());
+  for (const auto& [key, value] : sets.items()) d.sets.push_back(key + "=" + valueText(value));
+  d.bookmark = s.value("bookmark", 0);
+  if (s.contains("compare")) {
+    const auto& c = s.at("compare");
+    d.compare = {true, c.at("key").get<std::string>(), valueText(c.at("a")), valueText(c.at("b"))};
+  }
+  d.measure = s.value("measure", false);
+  return d;
+}
+
+// stb_easy_font draws ASCII: the few other characters captions use are spelled out.
+std::string ascii(const std::string& text) {
+  static const std::pair<const char*, const char*> kSpelled[] = {
+      {"\xC2\xB0", " deg"}, {"\xC3\x97", "x"},   {"\xE2\x80\x94", " - "}, {"\xE2\x80\x93", "-"},
+      {"\xE2\x80\x99", "'"}, {"\xCE\xBB", "lambda"}, {"\xE2\x89\x88", "~"},   {"\xE2\x86\x92", "->"},
+      {"\xE2\x80\x9C", "\""}, {"\xE2\x80\x9D", "\""}, {"\xC2\xB2", "^2"},    {"\xCF\x83", "sigma"}};
+  std::string out;
+  for (size_t i = 0; i < text.size();) {
+    bool done = false;
+    for (const auto& [from, to] : kSpelled)
+      if (text.compare(i, std::char_traits<char>::length(from), from) == 0) {
+        out += to, i += std::char_traits<char>::length(from), done = true;
+        break;
+      }
+    if (done) continue;
+    const unsigned char c = static_cast<unsigned char>(text[i++]);
+    if (c < 0x80) {
+      out += char(c);
+    } else if (c >= 0xC0) {  // the first byte of another character: one '?' for it
+      out += '?';
+    }
+  }
+  return out;
+}
+
+// Greedy word wrap at `scale` into lines at most `pixels` wide.
+std::vector<std::string> wrap(const std::string& text, int pixels, float scale) {
+  std::vector<std::string> lines;
+  std::istringstream words(text);
+  std::string line;
+  for (std::string w; words >> w;) {
+    const std::string longer = line.empty() ? w : line + " " + w;
+    if (!line.empty() && Label::scaleToFit(longer, pixels, 1e9f) < scale) {
+      lines.push_back(line), line = w;
+    } else {
+      line = longer;
+    }
+  }
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+}  // namespace
+
+std::vector<DemoStep> loadDemo(const std::filesystem::path& file) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(readFile(file));
+  } catch (const std::exception& e) {
+    throw UsageError("cannot read the demo " + file.string() + ": " + e.what());
+  }
+  std::vector<DemoStep> steps;
+  size_t k = 0;
+  try {
+    std::vector<std::string> common;
+    const nlohmann::json sets = j.value("settings", nlohmann::json::object());
+    for (const auto& [key, value] : sets.items()) common.push_back(key + "=" + valueText(value));
+    for (const auto& s : j.at("steps")) ++k, steps.push_back(readStep(s, common));
+  } catch (const std::exception& e) {
+    throw UsageError(file.string() + (k ? ", step " + std::to_string(k) : std::string()) + ": " + e.what() +
+                     " (a step has title, caption, settings, bookmark, and optionally compare and measure)");
+  }
+  if (steps.empty()) throw UsageError(file.string() + " has no steps");
+  return steps;
+}
+
+Presenter::Presenter(const std::filesystem::path& file, const Settings& settings) : steps_(loadDemo(file)) {
+  for (const auto& s : settings.all()) start_.emplace_back(s.name, settings.value(s.name));
+}
+
+const DemoStep& Presenter::apply(int k, Settings& settings) const {
+  if (k < 1 || k > count())
+    throw UsageError("--demo-step " + std::to_string(k) + ": the demo has steps 1 to " + std::to_string(count()));
+  for (const auto& [name, value] : start_) {
+    try {
+      settings.assign(name + "=" + value);
+    } catch (const UsageError&) {  // (the showcase's list follows its technique: not every name is there)
+    }
+  }
+  const DemoStep& s = step(k);
+  for (const auto& a : s.sets) {
+    try {
+      settings.assign(a);
+    } catch (const UsageError& e) {
+      throw UsageError("demo step " + std::to_string(k) + " (\"" + s.title + "\"): " + e.what());
+    }
+  }
+  return s;
+}
+
+int Presenter::bandHeight(glm::ivec2 size) { return std::max(72, size.y * 15 / 100); }
+
+void Presenter::drawBand(int k, const std::string& numbers, glm::ivec2 size) {
+  const DemoStep& s = step(k);
+  const int band = bandHeight(size), margin = std::max(8, size.x / 80);
+  glEnable(GL_SCISSOR_TEST);  // the band is dark, whatever was there
+  glScissor(0, 0, size.x, band);
+  const float dark[4] = {0.08f, 0.08f, 0.09f, 1};
+  glClearBufferfv(GL_COLOR, 0, dark);
+  glDisable(GL_SCISSOR_TEST);
+  // Sizes follow the window's height: 1080 rows give the caption 3.5 times stb_easy_font's size.
+  const float unit = float(band) / 160.0f;
+  const std::string title = strf("%d/%d  ", k, count()) + ascii(s.title);
+  const float titleScale = std::min(unit * 4.0f, Label::scaleToFit(title, size.x - 2 * margin, 1e9f));
+  int y = size.y - band + margin / 2;
+  label_.draw(title, {margin, y}, size, titleScale);
+  y += int(12 * titleScale);
+  const float captionScale = unit * 3.0f;
+  for (const auto& line : wrap(ascii(s.caption), size.x - 2 * margin, captionScale)) {
+    label_.draw(line, {margin, y}, size, std::min(captionScale, Label::scaleToFit(line, size.x - 2 * margin, 1e9f)));
+    y += int(11 * captionScale);
+  }
+  if (!numbers.empty())
+    label_.draw(numbers, {margin, y}, size,
+                std::min(unit * 2.2f, Label::scaleToFit(numbers, size.x - 2 * margin, 1e9f)));
+}
+
+std::string Presenter::numbersLine(const MeasureResult& r) {
+  if (const auto left = r.text.find("\nleft "); left != std::string::npos) {  // split screen: each half
+    std::string out;
+    std::istringstream lines(r.text.substr(left + 1));
+    for (std::string line; std::getline(lines, line);)
+      if (line.rfind("left ", 0) == 0 || line.rfind("right", 0) == 0)
+        out += (out.empty() ? "" : "   |   ") + line.substr(0, line.find(", light in shadows"));
+    return "measured: " + out;
+  }
+  std::string out = strf("measured: acne %.2f%%, leak %.2f%%", 100 * r.metrics.acneRate(), 100 * r.metrics.leakRate());
+  if (r.gapTexels >= 0) out += strf(", contact gap %.1f texels", r.gapTexels);
+  if (r.area.pixels > 0) out += strf(", off the area light %.1f%%", 100 * r.area.meanAbs());
+  return out;
+}
+
+}  // namespace wb
