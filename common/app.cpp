@@ -242,9 +242,11 @@ void App::drawLab() {
   split_.render(
       target_, lab.settings, shell_.compare,
       [&] {
+        target_.setSamples(lab.present_.msaa ? 4 : 1);
         target_.clear();
         glEnable(GL_DEPTH_TEST);
         if (programsOk) lab.render();
+        target_.resolve();
       },
       [&](int side) { sides_[side] = lab.light_; });
   if (!programsOk) {  // a window whose shaders never compiled says so on the frame, not just sky

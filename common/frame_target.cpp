@@ -2,8 +2,18 @@
 
 namespace wb {
 
+namespace {
+Texture makeMultisample(GLenum format, glm::ivec2 size, int samples) {
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &id);
+  glTextureStorage2DMultisample(id, samples, format, size.x, size.y, GL_TRUE);
+  return Texture(id);
+}
+}  // namespace
+
 void FrameTarget::resize(glm::ivec2 size) {
   if (size == size_ && fbo_.id()) return;
+  msSamples_ = 1, msFbo_ = Framebuffer();  // (reallocated at the next clear() if asked for)
   size_ = size;
   color_[0] = makeTexture2D(GL_RGBA8, size.x, size.y);
   color_[1] = makeTexture2D(GL_R32F, size.x, size.y);
@@ -13,11 +23,12 @@ void FrameTarget::resize(glm::ivec2 size) {
 }
 
 void FrameTarget::bind() const {
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glBindFramebuffer(GL_FRAMEBUFFER, multisampling_ ? msFbo_.id() : fbo_.id());
   glViewport(0, 0, size_.x, size_.y);
 }
 
 void FrameTarget::clear() const {
+  multisampling_ = samples_ > 1 && msSamples_ == samples_;
   bind();
   const float sky[4] = {0.55f, 0.65f, 0.78f, 1}, lit = 1, none[4] = {0, 0, 0, 0};
   glClearBufferfv(GL_COLOR, 0, sky);
@@ -26,6 +37,33 @@ void FrameTarget::clear() const {
   glStencilMask(0xFF);  // glClear honours the write masks
   glDepthMask(GL_TRUE);
   glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
+}
+
+void FrameTarget::resolve() {
+  if (samples_ > 1 && msSamples_ != samples_) {  // allocated here, the first frame after it was asked for
+    const GLenum formats[3] = {GL_RGBA8, GL_R32F, GL_RGBA32F};
+    for (int k = 0; k < 3; ++k) msColor_[k] = makeMultisample(formats[k], size_, samples_);
+    msDepthStencil_ = makeMultisample(GL_DEPTH24_STENCIL8, size_, samples_);
+    msFbo_ = makeFramebuffer({msColor_[0].id(), msColor_[1].id(), msColor_[2].id()}, msDepthStencil_.id());
+    msSamples_ = samples_;
+  }
+  if (!multisampling_) return;
+  multisampling_ = false;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, msFbo_.id());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_.id());
+  for (int k = 0; k < 3; ++k) {
+    const GLenum buffer = GLenum(GL_COLOR_ATTACHMENT0 + k);
+    glReadBuffer(buffer);
+    const GLenum draw[3] = {k == 0 ? buffer : GL_NONE, k == 1 ? buffer : GL_NONE, k == 2 ? buffer : GL_NONE};
+    glNamedFramebufferDrawBuffers(fbo_.id(), 3, draw);
+    glBlitFramebuffer(0, 0, size_.x, size_.y, 0, 0, size_.x, size_.y,
+                      k == 0 ? GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT : GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
+  }
+  const GLenum all[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  glNamedFramebufferDrawBuffers(fbo_.id(), 3, all);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  bind();
 }
 
 void FrameTarget::maskDataOutputs(bool masked) const {

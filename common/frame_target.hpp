@@ -1,7 +1,9 @@
 /// @file frame_target.hpp
 /// The offscreen target every camera pass draws into (shaders/wb/outputs.glsl declares it): colour
 /// (attachment 0), light visibility (1), world position (2), and depth + stencil. Screenshots,
-/// --dump-visibility and the measurements read it back.
+/// --dump-visibility and the measurements read it back. With samples (present.msaa, for lectures) the
+/// passes between clear() and resolve() draw into multisampled twins of the attachments, which
+/// resolve() averages into the single-sampled ones that everything else reads.
 #pragma once
 #include "common/gl.hpp"
 #include "common/image.hpp"
@@ -18,8 +20,14 @@ class FrameTarget {
  public:
   /// (Re)allocates every attachment when `size` differs from the current size.
   void resize(glm::ivec2 size);
-  /// Binds the framebuffer and sets the viewport to the whole target.
+  /// Multisampling for the frame's passes: 1 (off), 2, 4 or 8; takes effect at the next clear().
+  void setSamples(int samples) { samples_ = samples; }
+  /// Binds the framebuffer (the multisampled one between clear() and resolve()) and sets the
+  /// viewport to the whole target.
   void bind() const;
+  /// Averages the multisampled attachments into the target (each pixel's visibility and position
+  /// too: an edge pixel holds the mean of its samples); after it, bind() binds the target itself.
+  void resolve();
   /// Clears colour to the sky, visibility to 1 (lit), position to 0 (no surface), depth to 1 and
   /// stencil to 0.
   void clear() const;
@@ -48,6 +56,10 @@ class FrameTarget {
   Texture color_[3], depthStencil_;
   Framebuffer fbo_;
   glm::ivec2 size_{0};
+  int samples_ = 1, msSamples_ = 1;  // asked for; allocated below
+  Texture msColor_[3], msDepthStencil_;
+  Framebuffer msFbo_;
+  mutable bool multisampling_ = false;  // between clear() and resolve()
 };
 
 }  // namespace wb

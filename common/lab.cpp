@@ -30,6 +30,8 @@ Lab::Lab(std::string defaultScene, ShadowKind kind)
   // For lectures (demo.json turns them on); the visibility buffer that tests read never changes.
   settings.add("present.srgb", present_.srgb, "write sRGB-encoded colour (the shading is linear)");
   settings.add("present.grid", present_.grid, "a faint one-unit grid on the ground, to read texel sizes off");
+  settings.addChoice("present.msaa", present_.msaa, {"off", "4"},
+                     "multisampling of the camera pass (an edge pixel's visibility becomes its samples' mean)");
 }
 
 Lab::~Lab() = default;

@@ -188,6 +188,7 @@ class Lab {
   struct {
     bool srgb = false;  // present.srgb: encode the colour for the screen (the visibility is untouched)
     bool grid = false;  // present.grid: a faint world-unit grid on the ground
+    int msaa = 0;       // present.msaa: 0 off, 1 four samples per pixel in the camera pass
   } present_;
   std::list<Program> programs_;
   std::vector<std::string> warnings_;

@@ -1,0 +1,118 @@
+#!/usr/bin/env python3
+"""The lecture tools, end to end: presenter steps, present.* and the showcase.
+
+usage: lecture_test.py BUILD_DIR OUT_DIR
+  demo_steps   every step of every lab's demo.json (and the showcase's) renders headlessly with its
+               settings, bookmark and split screen, and says so in its record; a step that does not
+               exist is a clear usage error
+  present      present.srgb and present.grid change the colour and never the visibility buffer
+  hosted       the showcase draws a technique with the lab's own code: its visibility buffer is the
+               lab's own, byte for byte, on the same scene with the same settings
+  truth        in the showcase, shadow volumes match the ray-traced truth, and the ray-traced view
+               itself has no acne and no leak against the exact visibility
+Prints one line per check; exits 1 if any failed.
+"""
+import glob
+import json
+import os
+import subprocess
+import sys
+
+BUILD, OUT = sys.argv[1], sys.argv[2]
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SIZE = ["--size", "320x180"]
+failures = []
+
+
+def run(exe, args, expect=0):
+    done = subprocess.run([os.path.join(BUILD, exe), "--headless"] + SIZE + args, capture_output=True, text=True,
+                          timeout=300)
+    if done.returncode != expect:
+        raise AssertionError("%s %s exited %d (expected %d): %s" % (exe, " ".join(args), done.returncode, expect,
+                                                                    (done.stderr or done.stdout)[-600:]))
+    return done
+
+
+def check(name, f):
+    try:
+        f()
+        print("PASS " + name)
+    except AssertionError as e:
+        print("FAIL %s: %s" % (name, e))
+        failures.append(name)
+
+
+def read(path):
+    with open(path, "rb") as f:
+        return f.read()
+
+
+def demo_steps():
+    labs = sorted(os.path.basename(os.path.dirname(d)) for d in glob.glob(os.path.join(ROOT, "labs/*/demo.json")))
+    assert len(labs) == 10, "every lab has a demo.json (found %d)" % len(labs)
+    cases = [("lab%s_solution" % lab[:2], os.path.join(ROOT, "labs", lab, "demo.json")) for lab in labs]
+    cases.append(("showcase", os.path.join(ROOT, "tools/showcase/demo.json")))
+    for exe, path in cases:
+        steps = json.load(open(path))["steps"]
+        assert 3 <= len(steps) <= 10, "%s has %d steps" % (path, len(steps))
+        for k in range(1, len(steps) + 1):
+            record = os.path.join(OUT, "%s-step%d.json" % (exe, k))
+            run(exe, ["--demo-step", str(k), "--record", record, "--quiet"])
+            got = json.load(open(record))["demo_step"]
+            assert got["step"] == k and got["title"] == steps[k - 1]["title"], "%s step %d: record %s" % (exe, k, got)
+            if steps[k - 1].get("measure"):
+                assert got["numbers"].startswith("measured:"), "%s step %d measures: %s" % (exe, k, got)
+    bad = run("lab02_solution", ["--demo-step", "99"], expect=2)
+    assert "steps 1 to" in bad.stderr, bad.stderr
+
+
+def present():
+    base = ["--set", "present.srgb=false", "--set", "present.grid=false"]
+    on = ["--set", "present.srgb=true", "--set", "present.grid=true"]
+    for name, args in (("off", base), ("on", on)):
+        run("lab03_solution", args + ["--quiet", "--screenshot", os.path.join(OUT, "present-%s.png" % name),
+                                      "--dump-visibility", os.path.join(OUT, "present-%s.pfm" % name)])
+    assert read(os.path.join(OUT, "present-off.pfm")) == read(os.path.join(OUT, "present-on.pfm")), \
+        "present.* changed the visibility buffer"
+    assert read(os.path.join(OUT, "present-off.png")) != read(os.path.join(OUT, "present-on.png")), \
+        "present.* changed nothing on screen"
+
+
+def hosted():
+    scene = os.path.join(ROOT, "scenes/showcase.json")
+    # (technique, lab, the lab's settings that the showcase's row and its defaults set)
+    rows = [("pcf", "03", ["pcf.method=grid", "pcf.kernel=3", "shadow.map_size=1024"]),
+            ("vsm", "05", ["prefilter.kernel=3", "shadow.map_size=1024"]),
+            ("pcss", "07", ["shadow.map_size=1024"]),
+            ("cube_map", "08", ["cube.filter=pcf", "shadow.map_size=1024"]),
+            ("volumes", "09", [])]
+    for technique, nn, sets in rows:
+        mine = os.path.join(OUT, "hosted-%s.pfm" % technique)
+        theirs = os.path.join(OUT, "lab%s-%s.pfm" % (nn, technique))
+        run("showcase", ["--quiet", "--set", "showcase.technique=" + technique, "--set", "camera.bookmark=2",
+                         "--dump-visibility", mine])
+        lab_args = ["--quiet", "--scene", scene, "--set", "camera.bookmark=2", "--dump-visibility", theirs]
+        for s in sets:
+            lab_args += ["--set", s]
+        run("lab%s_solution" % nn, lab_args)
+        assert read(mine) == read(theirs), "showcase %s differs from lab %s's own frame" % (technique, nn)
+
+
+def truth():
+    csv_path = os.path.join(OUT, "truth.csv")
+    run("showcase", ["--quiet", "--metrics", "--sweep", "showcase.technique=volumes,ray_traced",
+                     "--sweep-csv", csv_path])
+    import csv
+    rows = {r["showcase.technique"]: r for r in csv.DictReader(open(csv_path))}
+    for t in ("volumes", "ray_traced"):
+        acne, leak = float(rows[t]["acne_%"]), float(rows[t]["leak_%"])
+        assert acne < 0.5 and leak < 0.5, "%s: acne %.2f %%, leak %.2f %% against the exact visibility" % (t, acne,
+                                                                                                          leak)
+    split = os.path.join(OUT, "split.png")
+    run("showcase", ["--quiet", "--compare", "showcase.technique=pcss,ray_traced", "--screenshot", split])
+
+
+os.makedirs(OUT, exist_ok=True)
+for name, f in (("demo_steps", demo_steps), ("present", present), ("hosted", hosted), ("truth", truth)):
+    check(name, f)
+sys.exit(1 if failures else 0)

@@ -1,0 +1,151 @@
+#!/usr/bin/env python3
+"""./workbook showcase --table: the whole workbook on one page.
+
+Runs the showcase headlessly (no window) through its --sweep, which times every pass and the frame
+and, with --metrics, measures each row against exact (ray-cast) visibility, and writes one Markdown
+page (docs/showcase-table.md, linked from the README) and the CSVs beside it in build/showcase/:
+  1. every technique on the showcase scene: GPU ms per pass, frame ms, acne, leak, light in shadows,
+     error against the area-light reference;
+  2. seed 000's two tables: PCF, VSM, ESM, EVSM against the filter width, and against the map size;
+  3. seed 004's table: shadow map, shadow volumes, ray tracing (one thread and every core).
+Python 3 standard library only.
+"""
+import argparse
+import csv
+import datetime
+import json
+import os
+import subprocess
+import sys
+
+TECHNIQUES = ["hard", "slope_bias", "pcf", "esm", "vsm", "evsm", "msm", "pcss", "cube_map", "volumes", "cascades",
+              "ray_traced"]
+FILTERED = ["pcf", "vsm", "esm", "evsm"]  # seed 000's columns, in its order
+META = {"showcase.technique", "showcase.kernel", "showcase.map_size", "ray_traced.threads"}
+
+
+def sweep(exe, name, sweeps, frames, out_dir, metrics):
+    """One showcase --sweep; returns its rows as dicts (the CSV's header names)."""
+    path = os.path.join(out_dir, name + ".csv")
+    cmd = [exe, "--headless", "--quiet", "--frames", str(frames), "--sweep-csv", path]
+    for s in sweeps:
+        cmd += ["--sweep", s]
+    if metrics:
+        cmd.append("--metrics")
+    print("  " + " ".join(cmd), flush=True)
+    done = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, timeout=900)
+    if done.returncode != 0:
+        sys.exit("showcase --table: the sweep '%s' failed (exit %d):\n%s" % (name, done.returncode,
+                                                                               done.stderr[-2000:]))
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def cell(row, key, fmt="%.2f"):
+    v = row.get(key, "")
+    try:
+        return fmt % float(v)
+    except ValueError:
+        return v if v else "-"
+
+
+def passes(row):
+    """GPU ms per pass of one row, as 'shadow 1.23, lighting 4.56'."""
+    out = []
+    for key, v in row.items():
+        if key.endswith("_gpu_ms") and v not in ("", "-"):
+            out.append("%s %.2f" % (key[: -len("_gpu_ms")], float(v)))
+    return ", ".join(out)
+
+
+def main_table(rows):
+    lines = ["| technique | GPU ms per pass | frame ms | acne % | leak % | light in shadows % | "
+             "off the area light % |", "|---|---|---|---|---|---|---|"]
+    for r in rows:
+        lines.append("| %s | %s | %s | %s | %s | %s | %s |" % (
+            r["showcase.technique"], passes(r), cell(r, "frame_ms"), cell(r, "acne_%"), cell(r, "leak_%"),
+            cell(r, "shadow_light_%"), cell(r, "area_diff_%")))
+    return lines
+
+
+def matrix(rows, row_key, row_label, label):
+    """Seed 000's shape: one row per value of row_key, one column per technique: FPS and the ratio
+    of frame time to the first row's."""
+    values = []
+    for r in rows:
+        if r[row_key] not in values:
+            values.append(r[row_key])
+    ms = {(r["showcase.technique"], r[row_key]): float(r["frame_ms"]) for r in rows}
+    head = "| %s | " % row_label + " | ".join("%s FPS (x time)" % t.upper() for t in FILTERED) + " |"
+    lines = [head, "|---|" + "---|" * len(FILTERED)]
+    for v in values:
+        cells = []
+        for t in FILTERED:
+            first = ms[(t, values[0])]
+            cells.append("%.0f (%.2f)" % (1000.0 / ms[(t, v)], ms[(t, v)] / first))
+        lines.append("| %s | %s |" % (label(v), " | ".join(cells)))
+    return lines
+
+
+def seed004_table(sm_sv, rt):
+    lines = ["| technique | frame ms | of which ray casting on the CPU, ms |", "|---|---|---|"]
+    names = {"hard": "shadow map (SM)", "volumes": "shadow volumes (SV)"}
+    for r in sm_sv:
+        lines.append("| %s | %s | - |" % (names[r["showcase.technique"]], cell(r, "frame_ms")))
+    for r in rt:
+        threads = "1 thread" if r["ray_traced.threads"] == "1" else "every core"
+        lines.append("| ray tracing (RT), %s | %s | %s |" % (threads, cell(r, "frame_ms"),
+                                                             cell(r, "ray_tracing_cpu_gpu_ms")))
+    return lines
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--exe", default="build/showcase")
+    ap.add_argument("--out", default="docs/showcase-table.md")
+    ap.add_argument("--csv-dir", default="build/showcase")
+    ap.add_argument("--frames", type=int, default=10, help="timed frames per row")
+    a = ap.parse_args()
+    os.makedirs(a.csv_dir, exist_ok=True)
+    print("showcase --table: sweeping (this takes a few minutes on a CPU)")
+    everything = sweep(a.exe, "techniques", ["showcase.technique=" + ",".join(TECHNIQUES)], a.frames, a.csv_dir, True)
+    kernels = sweep(a.exe, "kernels", ["showcase.technique=" + ",".join(FILTERED), "showcase.kernel=1,3,5,7"],
+                    a.frames, a.csv_dir, False)
+    sizes = sweep(a.exe, "map_sizes", ["showcase.technique=" + ",".join(FILTERED), "showcase.map_size=512,1024,2048"],
+                  a.frames, a.csv_dir, False)
+    sm_sv = sweep(a.exe, "seed004", ["showcase.technique=hard,volumes"], a.frames, a.csv_dir, False)
+    rt = sweep(a.exe, "ray_threads", ["showcase.technique=ray_traced", "ray_traced.threads=1,0"], a.frames, a.csv_dir,
+               False)
+    renderer = subprocess.run([a.exe, "--headless", "--record", "/dev/stdout", "--quiet", "--screenshot",
+                               os.path.join(a.csv_dir, "frame.png")], capture_output=True, text=True)
+    try:
+        where = json.loads(renderer.stdout)["renderer"]
+    except (ValueError, KeyError):
+        where = "this machine"
+    page = ["# The whole workbook on one page", "",
+            "Generated by `./workbook showcase --table` on %s (%s), 960x540, %d timed frames a row; "
+            "CSVs in build/showcase/. Every row is a lab's own solution on `scenes/showcase.json`, "
+            "measured against exact ray-cast visibility. Timings on a CPU renderer are noisy: compare "
+            "rows of one run, as ratios." % (datetime.date.today().isoformat(), where, a.frames), "",
+            "## Every technique", "",
+            "Defaults: 1024-texel maps, 3-texel filters (`showcase.kernel`, `showcase.map_size`). "
+            "Acne and leak are against a point light at the spot light's centre (cube_map: the point "
+            "light; cascades: the sun); *off the area light* is the mean difference from the spot "
+            "light's disk (0.6 units), the truth for a light with a size.", ""]
+    page += main_table(everything)
+    page += ["", "## Seed 000's tables: filter width and map size", "",
+             "Frames per second, and in brackets frame time relative to the first row of the column.", ""]
+    page += matrix(kernels, "showcase.kernel", "filter", lambda v: "%sx%s" % (v, v))
+    page += [""]
+    page += matrix(sizes, "showcase.map_size", "map", lambda v: "%sx%s" % (v, v))
+    page += ["", "## Seed 004's table: maps, volumes and ray tracing", ""]
+    page += seed004_table(sm_sv, rt)
+    page += [""]
+    with open(a.out, "w") as f:
+        f.write("\n".join(page))
+    print("\n".join(page))
+    print("wrote %s and %s/*.csv" % (os.path.abspath(a.out), os.path.abspath(a.csv_dir)))
+
+
+if __name__ == "__main__":
+    main()
