@@ -15,19 +15,19 @@ namespace wb {
 namespace {
 
 // A setting's value as demo.json may write it: "5", 5, 0.5 or true all mean what --set means.
-std::string valueText(const nlohmann::json& v) {
+std::string valueText(const nlohmann::ordered_json& v) {
   if (v.is_string()) return v.get<std::string>();
   if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
   if (v.is_number()) return v.dump();
   throw std::runtime_error("a setting's value must be a string, a number or true/false, not " + v.dump());
 }
 
-DemoStep readStep(const nlohmann::json& s, const std::vector<std::string>& common) {
+DemoStep readStep(const nlohmann::ordered_json& s, const std::vector<std::string>& common) {
   DemoStep d;
   d.title = s.at("title").get<std::string>();
   d.caption = s.at("caption").get<std::string>();
   d.sets = common;
-  const nlohmann::json sets = s.value("settings", nlohmann::json::object());
+  const nlohmann::ordered_json sets = s.value("settings", nlohmann::ordered_json::object());
   for (const auto& [key, value] : sets.items()) d.sets.push_back(key + "=" + valueText(value));
   d.bookmark = s.value("bookmark", 0);
   if (s.contains("compare")) {
@@ -83,9 +83,9 @@ std::vector<std::string> wrap(const std::string& text, int pixels, float scale) 
 }  // namespace
 
 std::vector<DemoStep> loadDemo(const std::filesystem::path& file) {
-  nlohmann::json j;
+  nlohmann::ordered_json j;  // (settings apply in the order written: a technique before its own settings)
   try {
-    j = nlohmann::json::parse(readFile(file));
+    j = nlohmann::ordered_json::parse(readFile(file));
   } catch (const std::exception& e) {
     throw UsageError("cannot read the demo " + file.string() + ": " + e.what());
   }
@@ -93,7 +93,7 @@ std::vector<DemoStep> loadDemo(const std::filesystem::path& file) {
   size_t k = 0;
   try {
     std::vector<std::string> common;
-    const nlohmann::json sets = j.value("settings", nlohmann::json::object());
+    const nlohmann::ordered_json sets = j.value("settings", nlohmann::ordered_json::object());
     for (const auto& [key, value] : sets.items()) common.push_back(key + "=" + valueText(value));
     for (const auto& s : j.at("steps")) ++k, steps.push_back(readStep(s, common));
   } catch (const std::exception& e) {

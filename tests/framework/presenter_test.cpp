@@ -44,6 +44,13 @@ TEST(Presenter, AMalformedDemoIsNamedWithItsStepAndWhatIsWrong) {
   EXPECT_NE(badValue.find("step 1"), std::string::npos) << badValue;
 }
 
+TEST(Presenter, SettingsApplyInTheOrderWritten) {  // (the showcase's technique before its own settings)
+  const auto steps = wb::loadDemo(demoFile(R"({"steps": [{"title": "t", "caption": "c",
+      "settings": {"z.technique": "b", "a.its_own": "1"}}]})"));
+  ASSERT_EQ(steps.at(0).sets.size(), 2u);
+  EXPECT_EQ(steps[0].sets[0], "z.technique=b");
+}
+
 TEST(Presenter, StepsStartFromTheSettingsAtStartAndDoNotAccumulate) {
   float a = 1, b = 2;
   bool on = false;
@@ -58,7 +65,9 @@ TEST(Presenter, StepsStartFromTheSettingsAtStartAndDoNotAccumulate) {
   const wb::Presenter p(file, s);
   ASSERT_EQ(p.count(), 2);
   const wb::DemoStep& one = p.apply(1, s);
-  EXPECT_EQ(a, 5), EXPECT_EQ(b, 2), EXPECT_TRUE(on);
+  EXPECT_EQ(a, 5);
+  EXPECT_EQ(b, 2);
+  EXPECT_TRUE(on);
   EXPECT_EQ(one.bookmark, 2);
   EXPECT_TRUE(one.measure);
   EXPECT_TRUE(one.compare.on);
@@ -67,7 +76,8 @@ TEST(Presenter, StepsStartFromTheSettingsAtStartAndDoNotAccumulate) {
   EXPECT_EQ(a, 1) << "step 2 starts from the start, not from step 1";
   EXPECT_EQ(b, 7);
   p.apply(1, s);
-  EXPECT_EQ(a, 5), EXPECT_EQ(b, 2);
+  EXPECT_EQ(a, 5);
+  EXPECT_EQ(b, 2);
   EXPECT_THROW(p.apply(3, s), wb::UsageError);
   EXPECT_THROW(p.apply(0, s), wb::UsageError);
 }

@@ -18,7 +18,7 @@ For every deck slides/NN_name.md (all of them by default, or those of --labs):
   * replaces step:K with the rendered PNG and {{numbers:K}} with the step's measurement;
   * runs pandoc to one self-contained HTML file per deck (reveal.js from slides/node_modules, math
     as MathML, every image and font inlined) and checks that it refers to nothing on the network;
-  * optionally prints each deck to PDF with chromium (--pdf);
+  * optionally prints each deck to PDF with chromium (--pdf; through check_decks.mjs --print-pdf);
   * writes index.html (every deck) and manifest.json (per deck: the slide count a browser must
     find, and per figure the PNG, its sha256 and its slide), which tools/slides/check_decks.mjs
     checks in a real browser.
@@ -29,6 +29,7 @@ missing or the command line is wrong.
 from __future__ import annotations
 
 import argparse
+import base64
 import datetime
 import glob
 import hashlib
@@ -43,6 +44,7 @@ import struct
 import subprocess
 import sys
 import time
+import zlib
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -55,7 +57,6 @@ MIN_PANDOC = (2, 10)  # the first pandoc whose revealjs template is written for 
 NUMBER_LABELS = [
     ("acne_percent", "acne", "%"),
     ("leak_percent", "leak", "%"),
-    ("shadow_light_percent", "light in shadows", "%"),
     ("contact_gap_texels", "contact gap", "texels"),
     ("area_mean_abs_percent", "area-light error", "%"),
     ("pcf_diff_percent", "vs PCF", "%"),
@@ -75,53 +76,86 @@ INLINE_CODE_RE = re.compile(r"(`+)(?:(?!\1).)+?\1")
 # slide fits the slide height (reveal.js scales the slide as a whole; a slide's content that is
 # taller than the slide is cut off). It marks <html data-figures-fitted="1"> when done.
 HEAD_INCLUDE = r"""<style>
-.reveal figure { margin: 0.25em auto 0; text-align: center; }
+.reveal .slides section > ul, .reveal .slides section > ol { display: block; margin-left: 1.2em; }
+.reveal figure { margin: 0.2em auto 0; text-align: center; }
+.reveal .slides section > p:has(> .numbers:only-child) { margin: 0.15em 0; }
+.reveal .slides section > figure + ul, .reveal .slides section > figure + p { margin-top: 0.3em; }
 .reveal figure img { display: block; margin: 0 auto; max-width: 100%; max-height: 500px;
   width: auto; height: auto; object-fit: contain; }
-.reveal figcaption { font-size: 0.5em; line-height: 1.3; margin-top: 0.35em; color: #444; }
-.reveal .numbers { font-size: 0.6em; font-variant-numeric: tabular-nums; color: #1a5e8a; }
+.reveal figcaption { font-size: 0.5em; line-height: 1.3; margin-top: 0.3em; color: #444; }
+.reveal .numbers { font-size: 0.55em; font-variant-numeric: tabular-nums; color: #1a5e8a; }
 .reveal math[display="block"] { margin: 0.4em auto; }
-.reveal .slides section .r-fit-figure-note { display: none; }
+.reveal mtd[columnalign="left"] { text-align: left; }
+.reveal mtd[columnalign="right"] { text-align: right; }
 </style>
 <script>
 (function () {
   "use strict";
-  // Shrinks the figures of every slide whose content is taller than the slide (binary search on
-  // one max-height for all figures of the slide), then asks reveal.js to lay out again.
-  function fitSlide(slide, height) {
+  // Makes every slide's content fit the slide (reveal.js scales a slide as a whole, so content
+  // taller or wider than the slide is cut off): a display equation wider than its line gets a
+  // smaller font; then, starting from the slide's own text size and shrinking it in steps down to
+  // 70 %, the figures get the largest height (at most 500 px, at least 280 px while the text may
+  // still shrink) at which the slide fits. A slide whose text had to shrink is marked
+  // data-fit-scale="0.85" (tools/slides/check_decks.mjs reports it). On screen this runs once
+  // reveal.js is ready and the images are decoded, then lays out again; printing (?print-pdf)
+  // runs it at "load", before reveal.js lays the slides out on pages (its "load" listener is
+  // added after this one).
+  var FIG_MAX = 500, FIG_MIN_WHILE_TEXT_SHRINKS = 280, FIG_MIN = 60;
+  var BOTTOM = 52;  // px kept free under a figure slide's content, clear of reveal.js's controls
+  var TEXT_SCALES = [1, 0.95, 0.9, 0.85, 0.8, 0.75, 0.7];
+  function fitSlide(slide, width, height) {
     var imgs = Array.prototype.slice.call(slide.querySelectorAll("figure img, p > img"));
-    if (!imgs.length) return;
     var shown = [];
     for (var el = slide; el && el.tagName === "SECTION"; el = el.parentElement) {
       shown.push([el, el.style.display, el.hasAttribute("hidden")]);
       el.style.display = "block";
       el.removeAttribute("hidden");
     }
-    var fits = function (h) {
-      imgs.forEach(function (img) { img.style.maxHeight = h + "px"; });
-      return slide.scrollHeight <= height;
+    var room = imgs.length ? height - BOTTOM : height;
+    var fits = function () { return slide.scrollHeight <= room && slide.scrollWidth <= width; };
+    var figures = function (h) { imgs.forEach(function (img) { img.style.maxHeight = h + "px"; }); };
+    var largest = function (lo, hi) {  // the largest figure height in [lo, hi] that fits, or 0
+      figures(hi);
+      if (fits()) return hi;
+      figures(lo);
+      if (!fits()) return 0;
+      while (hi - lo > 1) { var mid = (lo + hi) >> 1; figures(mid); if (fits()) lo = mid; else hi = mid; }
+      figures(lo);
+      return lo;
     };
-    if (!fits(500)) {
-      var lo = 60, hi = 500;
-      while (hi - lo > 1) { var mid = (lo + hi) >> 1; if (fits(mid)) lo = mid; else hi = mid; }
-      fits(lo);
+    Array.prototype.slice.call(slide.querySelectorAll('math[display="block"]')).forEach(function (m) {
+      var line = m.parentElement.getBoundingClientRect().width, w = m.getBoundingClientRect().width;
+      if (w > line && line > 0) m.style.fontSize = Math.max(0.6, Math.floor(100 * line / w) / 100) + "em";
+    });
+    var done = false;
+    for (var i = 0; i < TEXT_SCALES.length && !done; i++) {
+      slide.style.fontSize = TEXT_SCALES[i] === 1 ? "" : TEXT_SCALES[i] + "em";
+      if (TEXT_SCALES[i] !== 1) slide.setAttribute("data-fit-scale", String(TEXT_SCALES[i]));
+      done = imgs.length ? largest(FIG_MIN_WHILE_TEXT_SHRINKS, FIG_MAX) > 0 : fits();
     }
+    if (!done && imgs.length) largest(FIG_MIN, FIG_MAX);  // best effort; the check reports what is left
     shown.forEach(function (s) {
       s[0].style.display = s[1];
       if (s[2]) s[0].setAttribute("hidden", "");
     });
   }
-  function fitAll() {
-    var R = window.Reveal, height = R.getConfig().height;
-    R.getSlides().forEach(function (slide) { fitSlide(slide, height); });
-    R.layout();
+  function fitAll(relayout) {
+    var R = window.Reveal, width = R.getConfig().width, height = R.getConfig().height;
+    var slides = Array.prototype.slice.call(document.querySelectorAll(".reveal .slides section"))
+      .filter(function (s) { return !s.querySelector("section"); });
+    slides.forEach(function (slide) { fitSlide(slide, width, height); });
+    if (relayout) R.layout();
     document.documentElement.setAttribute("data-figures-fitted", "1");
+  }
+  if (/print-pdf/i.test(window.location.search)) {
+    window.addEventListener("load", function () { if (window.Reveal) fitAll(false); });
+    return;
   }
   function whenReady() {
     var imgs = Array.prototype.slice.call(document.querySelectorAll(".reveal img"));
     var decoded = imgs.map(function (img) { return img.decode ? img.decode().catch(function () {}) : null; });
     var fonts = document.fonts ? document.fonts.ready : null;
-    Promise.all(decoded.concat([fonts])).then(fitAll);
+    Promise.all(decoded.concat([fonts])).then(function () { fitAll(true); });
   }
   document.addEventListener("DOMContentLoaded", function () {
     var R = window.Reveal;
@@ -185,7 +219,7 @@ def need_reveal(reveal_dir: Path, slides_dir: Path) -> str:
     except (OSError, ValueError, KeyError):
         pass
     if not shutil.which("npm") and not (reveal_dir / "dist" / "reveal.js").is_file():
-        raise SetupError("npm is not installed: apt-get install -y npm, then: npm ci --prefix slides")
+        raise SetupError("npm is not installed: apt-get install -y nodejs npm, then: npm ci --prefix slides")
     if not (reveal_dir / "dist" / "reveal.js").is_file():
         raise SetupError(f"reveal.js is not installed in {reveal_dir}: run npm ci --prefix slides")
     try:
@@ -198,12 +232,18 @@ def need_reveal(reveal_dir: Path, slides_dir: Path) -> str:
     return have
 
 
-def find_chromium() -> str:
-    for cand in (os.environ.get("CHROMIUM"), "/usr/lib/chromium/chromium", shutil.which("chromium"),
-                 shutil.which("chromium-browser"), shutil.which("google-chrome")):
-        if cand and os.access(cand, os.X_OK):
-            return cand
-    raise SetupError("chromium is not installed (needed for --pdf): apt-get install -y chromium")
+def need_pdf_tools() -> str:
+    """--pdf prints with chromium through puppeteer-core (slides/node_modules): node, chromium and
+    npm ci --prefix slides are needed."""
+    node = shutil.which("node") or shutil.which("nodejs")
+    if not node:
+        raise SetupError("node is not installed (needed for --pdf): apt-get install -y nodejs npm")
+    if not any(os.access(c, os.X_OK) for c in filter(None, (os.environ.get("CHROMIUM"), "/usr/lib/chromium/chromium",
+                                                            shutil.which("chromium")))):
+        raise SetupError("chromium is not installed (needed for --pdf): apt-get install -y chromium")
+    if not (ROOT / "slides" / "node_modules" / "puppeteer-core").is_dir():
+        raise SetupError("puppeteer-core is not installed (needed for --pdf): npm ci --prefix slides")
+    return node
 
 
 # ----------------------------------------------------------------------------------------------
@@ -433,6 +473,11 @@ def numbers_line(deck: Deck, k: int, line: int) -> str:
         raise BuildError(f"{where}: the record of lab {deck.lab} step {k} ({rel(deck.renders[k]['json'])}) "
                          "has no \"measurement\" (was it rendered with --metrics?)\n"
                          f"  command: {deck.renders[k]['command']}")
+    step = record.get("demo_step") or {}
+    said = step.get("numbers", "") if isinstance(step, dict) else ""
+    if " | " in said:  # a split screen: the presenter's own line, which measures each half on its own
+        halves = said.removeprefix("measured: ").split(" | ")
+        return "[" + " · ".join(h.strip().replace("%", "\u00a0%") for h in halves) + "]{.numbers}"
     parts = []
     for key, label, unit in NUMBER_LABELS:
         v = m.get(key)
@@ -571,11 +616,109 @@ def slim_fonts(text: str) -> str:
     return FONT_FACE_RE.sub(one, text)
 
 
+# OpenType math fonts from Debian packages, best first: MathML needs one (for stretchy braces, big
+# operators, radicals), and a reader's machine may have none, so a deck with math carries its own.
+MATH_FONTS = [
+    ("Latin Modern Math", "/usr/share/texmf/fonts/opentype/public/lm-math/latinmodern-math.otf", "fonts-lmodern"),
+    ("DejaVu Math TeX Gyre", "/usr/share/fonts/truetype/dejavu/DejaVuMathTeXGyre.ttf", "fonts-dejavu-extra"),
+]
+
+
+def find_math_font():
+    for name, path, package in MATH_FONTS:
+        if os.path.isfile(path):
+            return name, Path(path)
+    return None
+
+
+def sfnt_to_woff(data: bytes) -> bytes:
+    """WOFF 1.0 (W3C): the font's tables, each zlib-compressed where that is smaller."""
+    flavor, num = struct.unpack(">IH", data[:6])
+    tables = []
+    for i in range(num):
+        tag, checksum, offset, length = struct.unpack(">4sIII", data[12 + 16 * i:28 + 16 * i])
+        raw = data[offset:offset + length]
+        comp = zlib.compress(raw, 9)
+        tables.append((tag, checksum, raw, comp if len(comp) < len(raw) else raw))
+    tables.sort(key=lambda t: t[0])
+    offset = 44 + 20 * num
+    directory, body = b"", b""
+    total_sfnt = 12 + 16 * num
+    for tag, checksum, raw, stored in tables:
+        directory += struct.pack(">4sIIII", tag, offset + len(body), len(stored), len(raw), checksum)
+        body += stored + b"\0" * (-len(stored) % 4)
+        total_sfnt += len(raw) + (-len(raw) % 4)
+    length = offset + len(body)
+    header = struct.pack(">4sIIHHIHHIIIII", b"wOFF", flavor, length, num, 0, total_sfnt, 1, 0, 0, 0, 0, 0, 0)
+    return header + directory + body
+
+
+def head_include(math_font) -> str:
+    """The <head> additions of a deck: HEAD_INCLUDE, and with math, the math font inlined."""
+    if not math_font:
+        return HEAD_INCLUDE
+    name, path = math_font
+    woff = base64.b64encode(sfnt_to_woff(path.read_bytes())).decode("ascii")
+    return (f"<style>\n@font-face {{ font-family: 'Slides Math'; src: url(data:font/woff;base64,{woff}) "
+            f"format('woff'); }}\n/* {name}, from {path} */\n"
+            ".reveal math { font-family: 'Slides Math', math; }\n</style>\n" + HEAD_INCLUDE)
+
+
+MATH_RE = re.compile(r"<math\b.*?</math>", re.S)
+MATH_TAG_RE = re.compile(r"<(/?)([a-z]+)\b[^>]*?(/?)>")
+TALL_MATHML = {"mfrac", "mtable", "munder", "munderover", "msqrt", "mroot"}  # not mover: accents
+STRETCHY_FENCE = re.compile(r'<mo stretchy="true" form="(prefix|postfix)">')
+
+
+def unstretch_fences(text: str) -> str:
+    """pandoc 2.17's texmath marks every bracket stretchy, \\left( or plain (, and Chromium sets a
+    stretchy bracket apart from its content: d(x) reads "d ( x )". A bracket pair around nothing
+    taller than a line (no fraction, matrix, root or underscript; an accent is not taller) is made
+    not stretchy."""
+    def one_math(m):
+        src = m.group(0)
+        edits = []  # (start, end) of "true" in a fence to make "false"
+        stack = []  # per open <mrow>: [fences, tall]
+        for t in MATH_TAG_RE.finditer(src):
+            closing, name, selfclosing = t.group(1), t.group(2), t.group(3)
+            if name == "mrow" and not closing and not selfclosing:
+                stack.append([[], False])
+            elif name == "mrow" and closing and stack:
+                fences, tall = stack.pop()
+                if len(fences) == 2 and not tall:
+                    edits += fences
+                if stack:
+                    stack[-1][1] = stack[-1][1] or tall
+            elif name == "mo" and not closing and stack:
+                f = STRETCHY_FENCE.match(src, t.start())
+                if f:
+                    i = src.index('"true"', t.start()) + 1
+                    stack[-1][0].append((i, i + 4))
+            elif name in TALL_MATHML and not closing and stack:
+                stack[-1][1] = True
+        for a, b in sorted(edits, reverse=True):
+            src = src[:a] + "false" + src[b:]
+        return FUNCTION_NAME_RE.sub(function_name, src)
+    return MATH_RE.sub(one_math, text)
+
+
+# texmath writes \ln, \max, \operatorname{f} as <mo>ln</mo>, which Chromium spaces like an
+# unknown operator, a thick space each side: "ln (x)". TeX puts a thin space before a function
+# name, and after it unless a bracket or another name follows.
+FUNCTION_NAME_RE = re.compile(r"<mo>([A-Za-z]{2,})</mo>(?=(<mrow>)?(<mo[^>]*>)?)")
+
+
+def function_name(m) -> str:
+    nxt = m.group(3) or ""
+    tight = 'form="prefix"' in nxt or re.match(r"<mo>[A-Za-z(\[{|]", m.string[m.end():m.end() + 6] or "")
+    return f'<mo lspace="0.1667em" rspace="{"0" if tight else "0.1667em"}">{m.group(1)}</mo>'
+
+
 def run_pandoc(pandoc: str, deck: Deck, md: Path, out: Path, reveal_dir: Path, head: Path, theme: str) -> Path:
     html_path = out / f"{deck.name}.html"
     cmd = [pandoc, "-f", "markdown", "-t", "revealjs", "--self-contained", "--slide-level=2", "--mathml",
            "-V", f"revealjs-url={reveal_dir}", "-V", f"theme={theme}", "-V", "width=1280", "-V", "height=720",
-           "-V", "margin=0.04", "-V", "hash=true", "-V", "slideNumber=c/t", "-V", "transition=fade",
+           "-V", "margin=0.04", "-V", "center=false", "-V", "hash=true", "-V", "slideNumber='c/t'", "-V", "transition=fade",
            "-H", str(head), "-o", str(html_path), str(md)]
     proc = subprocess.run(cmd, cwd=out, capture_output=True, text=True)
     errors = [ln for ln in proc.stderr.splitlines() if "Could not fetch" in ln or "Could not convert TeX" in ln]
@@ -585,6 +728,16 @@ def run_pandoc(pandoc: str, deck: Deck, md: Path, out: Path, reveal_dir: Path, h
     for ln in proc.stderr.splitlines():
         print(f"slides: pandoc: {deck.name}: {ln}")
     text = slim_fonts(html_path.read_text(encoding="utf-8"))
+    # pandoc writes figures as <img data-src=...> for reveal.js to load lazily, only within three
+    # slides of the current one; inlined images gain nothing from that, and the figure fitting needs
+    # every image loaded to measure it.
+    text = text.replace('<img data-src="data:', '<img src="data:')
+    text = unstretch_fences(text)
+    # Slides are top-aligned (center=false: a heading stays put from slide to slide, and a figure
+    # slide's content ends above the controls); the deck's and the sections' title slides are
+    # centred.
+    text = text.replace('<section id="title-slide"', '<section id="title-slide" class="center"', 1)
+    text = re.sub(r'(<section id="[^"]*" class="title-slide slide level1)"', r'\1 center"', text)
     html_path.write_text(text, encoding="utf-8")
     parser = ExternalRefs()
     parser.feed(text)
@@ -594,19 +747,22 @@ def run_pandoc(pandoc: str, deck: Deck, md: Path, out: Path, reveal_dir: Path, h
     return html_path
 
 
-def print_pdf(chromium: str, html_path: Path, timeout: float) -> Path:
+def print_pdf(node: str, html_path: Path, timeout: float) -> Path:
+    """Prints a deck as reveal.js lays it out for printing (?print-pdf), one page per slide, with
+    chromium driven by tools/slides/check_decks.mjs --print-pdf (it waits until the figures are
+    fitted and the pages laid out, which chromium --print-to-pdf alone does not)."""
     pdf = html_path.with_suffix(".pdf")
     pdf.unlink(missing_ok=True)
-    cmd = [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--no-pdf-header-footer",
-           "--disable-background-networking", "--no-first-run", "--virtual-time-budget=20000",
-           f"--print-to-pdf={pdf}", html_path.resolve().as_uri() + "?print-pdf"]
+    cmd = [node, str(ROOT / "tools" / "slides" / "check_decks.mjs"), "--print-pdf", str(html_path), str(pdf)]
     try:
         proc = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
     except subprocess.TimeoutExpired as e:
-        raise BuildError(f"chromium took more than {timeout:g} s to print {rel(html_path)}") from e
+        raise BuildError(f"printing {rel(html_path)} took more than {timeout:g} s") from e
     if proc.returncode != 0 or not pdf.is_file() or pdf.stat().st_size == 0:
-        raise BuildError(f"chromium could not print {rel(html_path)} to PDF (exit status {proc.returncode})\n"
-                         f"  command: {' '.join(shlex.quote(c) for c in cmd)}\n{tail(proc.stderr)}")
+        raise BuildError(f"could not print {rel(html_path)} to PDF (exit status {proc.returncode})\n"
+                         f"  command: {' '.join(shlex.quote(c) for c in cmd)}\n{tail(proc.stderr or proc.stdout)}")
+    for ln in proc.stdout.splitlines():
+        print(f"slides: {ln}")
     return pdf
 
 
@@ -619,8 +775,10 @@ def write_index(out: Path, entries: list) -> None:
     rows = []
     for e in entries:
         pdf = f' · <a href="{html.escape(e["pdf"])}">PDF</a>' if e.get("pdf") else ""
-        rows.append(f'<li><a href="{html.escape(e["html"])}"><span class="lab">Lab {e["lab"]}</span> '
-                    f'{html.escape(e["title"])}</a>{pdf} <span class="meta">{e["expected_slides"]} slides, '
+        title = html.escape(e["title"])
+        if not re.match(rf"lab\s*0?{int(e['lab'])}\b", e["title"], re.I):  # the title may name the lab already
+            title = f'<span class="lab">Lab {e["lab"]}</span> {title}'
+        rows.append(f'<li><a href="{html.escape(e["html"])}">{title}</a>{pdf} <span class="meta">{e["expected_slides"]} slides, '
                     f'{len(e["figures"])} figures</span></li>')
     stamp = datetime.datetime.now().strftime("%Y-%m-%d %H:%M")
     (out / "index.html").write_text(f"""<!DOCTYPE html>
@@ -659,7 +817,8 @@ def main(argv=None) -> int:
     ap.add_argument("--labs-dir", default=str(ROOT / "labs"), help="the labs with demo.json (default: labs/)")
     ap.add_argument("--reveal-dir", help="reveal.js (default: slides/node_modules/reveal.js)")
     ap.add_argument("--theme", default="white", help="reveal.js theme (default: white)")
-    ap.add_argument("--pdf", action="store_true", help="also print every deck to PDF with chromium")
+    ap.add_argument("--pdf", action="store_true",
+                    help="also print every deck to PDF (BUILD_DIR/slides/NN_name.pdf) with chromium")
     ap.add_argument("--reuse-renders", action="store_true",
                     help="keep a step's earlier render when its command, step, lab settings and renderer "
                          "binary are unchanged (shader edits are not seen: do not use for a release)")
@@ -681,7 +840,7 @@ def main(argv=None) -> int:
     try:
         pandoc, pandoc_version = need_pandoc()
         reveal_version = need_reveal(reveal_dir.resolve(), ROOT / "slides")
-        chromium = find_chromium() if args.pdf else None
+        node = need_pdf_tools() if args.pdf else None
     except SetupError as e:
         print(f"slides: {e}", file=sys.stderr)
         return 2
@@ -701,8 +860,7 @@ def main(argv=None) -> int:
         out.mkdir(parents=True, exist_ok=True)
         srcdir = out / "src"
         srcdir.mkdir(exist_ok=True)
-        head = srcdir / "head.html"
-        head.write_text(HEAD_INCLUDE, encoding="utf-8")
+        math_font = find_math_font()
 
         entries = []
         for deck in decks:
@@ -717,10 +875,22 @@ def main(argv=None) -> int:
                 for target in s["images"]:
                     if target not in expected_targets:
                         line = next((n for n, t in enumerate(deck.lines, 1) if target and target in t), "?")
+                        if FIGURE_RE.match(target):
+                            raise BuildError(f"{rel(deck.source)}:{line}: the figure ({target}) is not written on one "
+                                             "line: write ![caption](step:K) on a single line")
                         raise BuildError(f"{rel(deck.source)}:{line}: image '{target}': a deck's only images are "
                                          "demo steps, written ![caption](step:K)")
+            math = sum(s["math"] for s in structure["slides"])
+            deck_font = math_font if math else None
+            if math and not math_font:
+                print(f"slides: warning: {rel(deck.source)} has math but no OpenType math font is installed: its "
+                      "equations use the reader's fonts (apt-get install -y fonts-lmodern)")
+            head = srcdir / f"{deck.name}.head.html"
+            head.write_text(head_include(deck_font), encoding="utf-8")
             html_path = run_pandoc(pandoc, deck, md, out, reveal_dir.resolve(), head, args.theme)
-            pdf = print_pdf(chromium, html_path, 180) if chromium else None
+            pdf = print_pdf(node, html_path, 180) if node else None
+            if not pdf:
+                html_path.with_suffix(".pdf").unlink(missing_ok=True)  # an earlier PDF would be stale
 
             figures = []
             fig_uses = [u for u in deck.uses if u.kind == "figure"]
@@ -736,26 +906,38 @@ def main(argv=None) -> int:
                 w, h = png_size(png)
                 figures.append({"step": u.step, "line": u.line, "caption": u.caption, "slide": slide,
                                 "png": png.relative_to(out).as_posix(), "sha256": sha256(png),
-                                "width": w, "height": h, "record": deck.renders[u.step]["json"].relative_to(out).as_posix()})
+                                "width": w, "height": h,
+                                "record": deck.renders[u.step]["json"].relative_to(out).as_posix()})
             numbers = [{"step": u.step, "line": u.line, "text": numbers_line(deck, u.step, u.line)}
                        for u in deck.uses if u.kind == "numbers"]
-            math = sum(s["math"] for s in structure["slides"])
             entry = {"lab": deck.lab, "name": deck.name, "title": html_title(html_path, deck.name),
                      "source": rel(deck.source), "demo": rel(deck.demo), "html": html_path.name,
                      "pdf": pdf.name if pdf else None, "bytes": html_path.stat().st_size,
                      "expected_slides": len(structure["slides"]), "has_title_slide": structure["has_title"],
-                     "math": math, "figure_slides": sorted({f["slide"] for f in figures}),
-                     "figures": figures, "numbers": numbers}
+                     "math": math, "dollar_lines": sum(1 for _, t in scannable_lines(deck.lines) if "$" in t),
+                     "math_font": deck_font[0] if deck_font else None,
+                     "figure_slides": sorted({f["slide"] for f in figures}), "figures": figures, "numbers": numbers}
             entries.append(entry)
             print(f"slides: {rel(html_path)}: {entry['expected_slides']} slides, {len(figures)} figures, "
                   f"{math} equations, {entry['bytes'] / 1e6:.1f} MB" + (f"; {rel(pdf)}" if pdf else ""))
 
+        # A build of some labs (--labs) keeps the other decks an earlier build left in OUT.
+        built = {e["name"] for e in entries}
+        try:
+            earlier = json.loads((out / "manifest.json").read_text(encoding="utf-8")).get("decks", [])
+        except (OSError, ValueError):
+            earlier = []
+        kept = [e for e in earlier if isinstance(e, dict) and e.get("name") not in built
+                and (out / str(e.get("html", ""))).is_file() and (slides_dir / f"{e.get('name')}.md").is_file()]
+        if kept:
+            print(f"slides: keeping the earlier build of {', '.join(e['name'] for e in kept)} in the index")
+        entries = sorted(entries + kept, key=lambda e: e["name"])
         manifest = {"generator": "tools/slides/build.py", "pandoc": pandoc_version, "reveal.js": reveal_version,
                     "render_size": RENDER_SIZE, "renderer": prefix, "decks": entries}
         (out / "manifest.json").write_text(json.dumps(manifest, indent=2, ensure_ascii=False) + "\n", encoding="utf-8")
         write_index(out, entries)
-        print(f"slides: {len(entries)} deck{'s' if len(entries) != 1 else ''} in {rel(out)}/ "
-              f"(index.html, manifest.json); check them: node tools/slides/check_decks.mjs {rel(out / 'manifest.json')}")
+        print(f"slides: built {len(built)} deck{'s' if len(built) != 1 else ''}; {rel(out)}/index.html lists "
+              f"{len(entries)}; check them: node tools/slides/check_decks.mjs {rel(out / 'manifest.json')}")
         return 0
     except BuildError as e:
         print(f"slides: error: {e}", file=sys.stderr)
