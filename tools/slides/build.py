@@ -825,8 +825,8 @@ def main(argv=None) -> int:
     ap.add_argument("--render-timeout", type=float, default=300, help="seconds per render (default: 300)")
     args = ap.parse_args(argv)
 
-    build_dir = Path(args.build_dir)
-    out = Path(args.out) if args.out else build_dir / "slides"
+    build_dir = Path(args.build_dir).resolve()  # (pandoc runs in the output folder: every path absolute)
+    out = (Path(args.out) if args.out else build_dir / "slides").resolve()
     slides_dir, labs_dir = Path(args.slides_dir), Path(args.labs_dir)
     reveal_dir = Path(args.reveal_dir) if args.reveal_dir else ROOT / "slides" / "node_modules" / "reveal.js"
     prefix = args.render_cmd or DEFAULT_RENDERER
