@@ -170,6 +170,7 @@ void App::host(std::unique_ptr<Lab> lab) {
   }
   if (options_.demoStep > 0 && !presenter_) throw UsageError("--demo-step: " + demo.string() + " does not exist");
   if (options_.demoStep > 0) showStep(options_.demoStep);
+  applyPresentation();  // (before init(): its programs are built with present.*)
   lab_->init();
   lab_->board_.probe();
   // A window checks the exercises in the background (a headless run is what the checks start).
@@ -212,7 +213,7 @@ void App::loop() {
 void App::frame(float dt) {
   if (imgui_) beginUiFrame();
   hotReload();
-  uploadPresentation();
+  applyPresentation();
   lab_->update(dt);
   target_.resize(frameSize_);
   drawLab();
@@ -353,12 +354,12 @@ void App::showStep(int k) {
   say("step " + std::to_string(k) + "/" + std::to_string(presenter_->count()) + ": " + s.title);
 }
 
-// present.* reach every camera pass through one uniform block (shaders/wb/outputs.glsl).
-void App::uploadPresentation() {
-  const int values[4] = {lab_->present_.srgb ? 1 : 0, lab_->present_.grid ? 1 : 0, 0, 0};
-  if (!presentation_.id()) presentation_ = makeBuffer(sizeof values, nullptr);
-  glNamedBufferSubData(presentation_.id(), 0, sizeof values, values);
-  glBindBufferBase(GL_UNIFORM_BUFFER, 7, presentation_.id());
+// present.* are compiled into every program (shaders/wb/outputs.glsl): a change rebuilds them now.
+void App::applyPresentation() {
+  const std::string defines = std::string(lab_->present_.srgb ? "#define WB_PRESENT_SRGB\n" : "") +
+                              (lab_->present_.grid ? "#define WB_PRESENT_GRID\n" : "");
+  if (setSharedShaderDefines(defines))
+    for (auto& p : lab_->programs_) p.reloadIfChanged();
 }
 
 void App::say(const std::string& text) const {

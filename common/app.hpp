@@ -78,7 +78,7 @@ class App {
   void presentWindow();
   void saveWindowScreenshot(const std::string& path);
   void stepKeys(const std::function<bool(int)>& pressed);
-  void uploadPresentation();
+  void applyPresentation();
   MeasureResult measureNow(bool report);
   void say(const std::string& text) const;
 
@@ -97,7 +97,6 @@ class App {
   glm::ivec2 pictureSize_{0};
   std::unique_ptr<LiveChecks> checks_;  // the exercises' fast checks, in a window
   std::unique_ptr<Presenter> presenter_;  // the lab's demo.json, if it has one
-  Buffer presentation_;                   // present.* for shaders/wb/outputs.glsl (binding 7)
   std::unique_ptr<Lab> lab_;            // declared last: destroyed first
 
   ShellState shell_;

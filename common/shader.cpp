@@ -188,17 +188,32 @@ ProgramId linkProgram(const std::vector<std::pair<GLenum, ShaderSource>>& stages
   return program;
 }
 
+namespace {
+std::string& sharedDefines() {
+  static std::string defines;
+  return defines;
+}
+}  // namespace
+
+bool setSharedShaderDefines(const std::string& defines) {
+  if (sharedDefines() == defines) return false;
+  sharedDefines() = defines;
+  return true;
+}
+
 ProgramId Program::build() {
   const auto path = shaderSearchPath();
+  builtShared_ = sharedDefines();
+  const std::string defines = builtShared_ + defines_;
   inputs_.clear();
   std::vector<std::pair<GLenum, ShaderSource>> sources;
   std::string names;
   for (const auto& stage : stages_) {
     if (!inlineText_.empty()) {
-      sources.emplace_back(stage.type, preprocessShader(inlineText_, stage.file, defines_, path));
+      sources.emplace_back(stage.type, preprocessShader(inlineText_, stage.file, defines, path));
     } else {
       const fs::path file = findShaderFile(stage.file, path);
-      sources.emplace_back(stage.type, preprocessShader(readFile(file), file, defines_, path));
+      sources.emplace_back(stage.type, preprocessShader(readFile(file), file, defines, path));
     }
     for (const auto& f : sources.back().second.files)
       if (fs::exists(f)) inputs_.emplace_back(f, fs::last_write_time(f));
@@ -224,7 +239,7 @@ Program Program::tryLoad(std::vector<ShaderStage> stages, std::string defines) {
 }
 
 bool Program::reloadIfChanged() {
-  bool changed = false;
+  bool changed = builtShared_ != sharedDefines();
   for (const auto& [file, time] : inputs_) {
     std::error_code ec;
     if (fs::last_write_time(file, ec) != time) changed = true;

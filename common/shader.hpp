@@ -53,6 +53,12 @@ std::string mapShaderLog(const std::string& log, const std::vector<std::filesyst
 /// Compiles and links preprocessed stages; throws wb::Error with every message mapped to file:line.
 ProgramId linkProgram(const std::vector<std::pair<GLenum, ShaderSource>>& stages);
 
+/// Defines every program is built with besides its own: the app's present.* settings
+/// (WB_PRESENT_SRGB, WB_PRESENT_GRID), compiled in rather than branched on, so that they cost
+/// nothing when off (llvmpipe runs both sides of a branch). Returns true when they changed; every
+/// program then rebuilds at its next reloadIfChanged().
+bool setSharedShaderDefines(const std::string& defines);
+
 /// A linked program built from files. Construction throws wb::Error (with file:line) on failure;
 /// reloadIfChanged() never throws and keeps the last good program.
 class Program {
@@ -70,7 +76,8 @@ class Program {
   /// True once a program has been built successfully.
   bool ok() const { return program_.id() != 0; }
 
-  /// Rebuilds if any file it was read from changed; returns true when a new program is in use.
+  /// Rebuilds if any file it was read from changed, or the shared defines did; returns true when a
+  /// new program is in use.
   bool reloadIfChanged();
   /// The error of the last failed build ("" when the current program is up to date).
   const std::string& error() const { return error_; }
@@ -90,6 +97,7 @@ class Program {
  private:
   ProgramId build();  // throws wb::Error
   std::vector<ShaderStage> stages_;
+  std::string builtShared_;  // the shared defines it was built with
   std::string defines_;
   std::string inlineText_;  // for fromSource(): the text of stages_[0]
   std::vector<std::pair<std::filesystem::path, std::filesystem::file_time_type>> inputs_;

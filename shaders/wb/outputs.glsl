@@ -6,11 +6,8 @@ layout(location = 0) out vec4 o_color;
 layout(location = 1) out float o_visibility;  // 1 lit, 0 shadowed
 layout(location = 2) out vec4 o_position;     // world xyz; w = +1 facing the light, -1 facing away
 
-// present.* (the app binds them for every frame): lecture pictures, never the visibility.
-layout(std140, binding = 7) uniform WbPresent {
-  int wbPresentSrgb;  // encode the linear colour for an sRGB screen
-  int wbPresentGrid;  // a faint one-unit grid on upward-facing surfaces
-};
+// present.* (the app compiles them in: WB_PRESENT_SRGB, WB_PRESENT_GRID): lecture pictures, never
+// the visibility.
 
 // How much of a grid line covers this pixel, faded out where the lines are closer than pixels.
 float wbGridLine(vec2 p) {
@@ -20,14 +17,14 @@ float wbGridLine(vec2 p) {
 }
 
 vec3 wbPresent(vec3 color, vec3 worldPos) {
-  if (wbPresentGrid != 0) {
-    vec3 n = normalize(cross(dFdx(worldPos), dFdy(worldPos)));
-    if (abs(n.y) > 0.9) color *= 1.0 - 0.3 * wbGridLine(worldPos.xz);
-  }
-  if (wbPresentSrgb != 0) {
-    vec3 c = clamp(color, 0.0, 1.0);
-    color = mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
-  }
+#ifdef WB_PRESENT_GRID  // a faint one-unit grid on upward-facing surfaces
+  vec3 n = normalize(cross(dFdx(worldPos), dFdy(worldPos)));
+  if (abs(n.y) > 0.9) color *= 1.0 - 0.3 * wbGridLine(worldPos.xz);
+#endif
+#ifdef WB_PRESENT_SRGB  // encode the linear colour for an sRGB screen
+  vec3 c = clamp(color, 0.0, 1.0);
+  color = mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
+#endif
   return color;
 }
 
