@@ -95,9 +95,9 @@ class App {
   Label label_;      // text burnt into the frame (a shader error at start-up)
   Texture picture_;  // the handout's picture of the finished lab (a window only)
   glm::ivec2 pictureSize_{0};
-  std::unique_ptr<LiveChecks> checks_;  // the exercises' fast checks, in a window
+  std::unique_ptr<LiveChecks> checks_;    // the exercises' fast checks, in a window
   std::unique_ptr<Presenter> presenter_;  // the lab's demo.json, if it has one
-  std::unique_ptr<Lab> lab_;            // declared last: destroyed first
+  std::unique_ptr<Lab> lab_;              // declared last: destroyed first
 
   ShellState shell_;
   int step_ = 0;              // the presenter step shown (0: not presenting)

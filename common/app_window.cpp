@@ -138,5 +138,4 @@ void App::saveWindowScreenshot(const std::string& path) {
   say("wrote " + fs::absolute(path).string());
 }
 
-
 }  // namespace wb

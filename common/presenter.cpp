@@ -41,9 +41,9 @@ DemoStep readStep(const nlohmann::ordered_json& s, const std::vector<std::string
 // stb_easy_font draws ASCII: the few other characters captions use are spelled out.
 std::string ascii(const std::string& text) {
   static const std::pair<const char*, const char*> kSpelled[] = {
-      {"\xC2\xB0", " deg"}, {"\xC3\x97", "x"},   {"\xE2\x80\x94", " - "}, {"\xE2\x80\x93", "-"},
-      {"\xE2\x80\x99", "'"}, {"\xCE\xBB", "lambda"}, {"\xE2\x89\x88", "~"},   {"\xE2\x86\x92", "->"},
-      {"\xE2\x80\x9C", "\""}, {"\xE2\x80\x9D", "\""}, {"\xC2\xB2", "^2"},    {"\xCF\x83", "sigma"}};
+      {"\xC2\xB0", " deg"},   {"\xC3\x97", "x"},      {"\xE2\x80\x94", " - "}, {"\xE2\x80\x93", "-"},
+      {"\xE2\x80\x99", "'"},  {"\xCE\xBB", "lambda"}, {"\xE2\x89\x88", "~"},   {"\xE2\x86\x92", "->"},
+      {"\xE2\x80\x9C", "\""}, {"\xE2\x80\x9D", "\""}, {"\xC2\xB2", "^2"},      {"\xCF\x83", "sigma"}};
   std::string out;
   for (size_t i = 0; i < text.size();) {
     bool done = false;

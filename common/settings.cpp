@@ -107,7 +107,8 @@ void Settings::onChange(const std::string& name, std::function<void()> f) {
 
 void Settings::include(const Settings& other, const std::function<bool(const Setting&)>& keep) {
   for (const auto& s : other.settings_) {
-    const bool known = std::any_of(settings_.begin(), settings_.end(), [&](const Setting& t) { return t.name == s.name; });
+    const bool known =
+        std::any_of(settings_.begin(), settings_.end(), [&](const Setting& t) { return t.name == s.name; });
     if (!known && keep(s)) settings_.push_back(s);
   }
 }

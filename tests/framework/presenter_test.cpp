@@ -1,8 +1,8 @@
 // Presenter steps (common/presenter.hpp): a malformed demo.json is named with its step and what is
 // wrong, steps do not accumulate (paging back shows what paging forward showed), a step that does
 // not exist is a usage error, and the showcase's settings follow its technique at once.
-#include "common/error.hpp"
 #include "common/presenter.hpp"
+#include "common/error.hpp"
 #include "common/settings.hpp"
 #include "common/variant.hpp"
 

@@ -85,7 +85,8 @@ class Showcase : public wb::Lab {
   void render() override {
     wb::HostedLab& h = *hosted[size_t(technique)];
     const Technique& t = kTechniques[size_t(technique)];
-    if (kernel > 0 && *t.kernelKey) h.lab().tunables().assign(std::string(t.kernelKey) + "=" + kKernels[size_t(kernel)]);
+    if (kernel > 0 && *t.kernelKey)
+      h.lab().tunables().assign(std::string(t.kernelKey) + "=" + kKernels[size_t(kernel)]);
     if (mapSize > 0 && hasSetting(h, "shadow.map_size"))
       h.lab().tunables().assign("shadow.map_size=" + kMapSizes[size_t(mapSize)]);
     h.render(*this, lastDt);
