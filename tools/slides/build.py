@@ -823,6 +823,8 @@ def main(argv=None) -> int:
                     help="keep a step's earlier render when its command, step, lab settings and renderer "
                          "binary are unchanged (shader edits are not seen: do not use for a release)")
     ap.add_argument("--render-timeout", type=float, default=300, help="seconds per render (default: 300)")
+    ap.add_argument("--check", action="store_true",
+                    help="only check the decks against the labs' demo.json (no renders, no pandoc): the test suite's check")
     args = ap.parse_args(argv)
 
     build_dir = Path(args.build_dir).resolve()  # (pandoc runs in the output folder: every path absolute)
@@ -836,6 +838,22 @@ def main(argv=None) -> int:
         bad = [x for x in labs if not re.fullmatch(r"\d\d", x)]
         if bad:
             ap.error(f"--labs takes two-digit lab numbers, e.g. 02,05 (not {', '.join(bad)})")
+
+    if args.check:
+        problems, count = [], 0
+        try:
+            for src in find_decks(slides_dir, labs):
+                deck = Deck(name=src.stem, lab=src.name[:2], source=src, demo=labs_dir / src.stem / "demo.json")
+                load_demo(deck)
+                problems += scan_deck(deck)
+                count += 1
+        except BuildError as e:
+            problems.append(str(e))
+        for p in problems:
+            print(f"slides: {p}", file=sys.stderr)
+        print(f"slides: {count} deck(s) checked against their demo steps: "
+              f"{'OK' if not problems else str(len(problems)) + ' problem(s)'}")
+        return 1 if problems or count == 0 else 0
 
     try:
         pandoc, pandoc_version = need_pandoc()
