@@ -152,21 +152,29 @@ void Presenter::drawBand(int k, const std::string& numbers, glm::ivec2 size) {
   }
   if (!numbers.empty())
     label_.draw(numbers, {margin, y}, size,
-                std::min(unit * 2.2f, Label::scaleToFit(numbers, size.x - 2 * margin, 1e9f)));
+                std::min(unit * 2.8f, Label::scaleToFit(numbers, size.x - 2 * margin, 1e9f)));
 }
 
 std::string Presenter::numbersLine(const MeasureResult& r) {
   if (const auto left = r.text.find("\nleft "); left != std::string::npos) {  // split screen: each half
     std::string out;
     std::istringstream lines(r.text.substr(left + 1));
-    for (std::string line; std::getline(lines, line);)
-      if (line.rfind("left ", 0) == 0 || line.rfind("right", 0) == 0)
+    for (std::string line; std::getline(lines, line);) {
+      if (line.rfind("left ", 0) == 0 || line.rfind("right", 0) == 0) {
         out += (out.empty() ? "" : "   |   ") + line.substr(0, line.find(", light in shadows"));
+      } else if (const auto at = line.find(", lighter "); at != std::string::npos) {  // against PCF
+        out += ", lighter than PCF " + line.substr(at + 10);
+      }
+    }
     return "measured: " + out;
   }
   std::string out = strf("measured: acne %.2f%%, leak %.2f%%", 100 * r.metrics.acneRate(), 100 * r.metrics.leakRate());
   if (r.gapTexels >= 0) out += strf(", contact gap %.1f texels", r.gapTexels);
+  if (r.reference.pixels > 0) out += strf(", lighter than PCF %.1f%%", 100 * r.reference.lighterRate());
   if (r.area.pixels > 0) out += strf(", off the area light %.1f%%", 100 * r.area.meanAbs());
+  if (r.seams.seam.pixels > 0)
+    out += strf(", error at the seams %.2f%% (elsewhere %.2f%%)", 100 * r.seams.seam.meanAbs(),
+                100 * r.seams.rest.meanAbs());
   return out;
 }
 

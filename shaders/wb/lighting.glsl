@@ -2,9 +2,16 @@
 #ifndef WB_LIGHTING_GLSL
 #define WB_LIGHTING_GLSL
 // Diffuse light scaled by visibility, over a constant ambient term that keeps shadows readable.
+// Encoded for the screen (present.srgb), the ambient is darker in linear terms, so that shadows keep
+// the contrast they have on screen without it.
+#ifdef WB_PRESENT_SRGB
+const float kWbAmbient = 0.06;
+#else
+const float kWbAmbient = 0.25;
+#endif
 vec3 wbShade(vec3 albedo, vec3 n, vec3 toLight, vec3 lightColor, float visibility) {
   float diffuse = max(dot(n, toLight), 0.0);
-  return albedo * (0.25 + 0.75 * diffuse * visibility * lightColor);
+  return albedo * (kWbAmbient + (1.0 - kWbAmbient) * diffuse * visibility * lightColor);
 }
 // Magenta/black stripes mark pixels whose exercise is not implemented yet: visible, never mistaken
 // for a shadow.

@@ -19,7 +19,7 @@ float wbGridLine(vec2 p) {
 vec3 wbPresent(vec3 color, vec3 worldPos) {
 #ifdef WB_PRESENT_GRID  // a faint one-unit grid on upward-facing surfaces
   vec3 n = normalize(cross(dFdx(worldPos), dFdy(worldPos)));
-  if (abs(n.y) > 0.9) color *= 1.0 - 0.3 * wbGridLine(worldPos.xz);
+  if (n.y > 0.9) color *= 1.0 - 0.3 * wbGridLine(worldPos.xz);  // (n faces the eye: ground, not ceiling)
 #endif
 #ifdef WB_PRESENT_SRGB  // encode the linear colour for an sRGB screen
   vec3 c = clamp(color, 0.0, 1.0);

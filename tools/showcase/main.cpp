@@ -39,9 +39,9 @@ const std::vector<Technique> kTechniques = {
     {"evsm", "06_evsm", {}, "prefilter.kernel"},
     {"msm", "06_evsm", {"evsm.technique=msm"}, "prefilter.kernel"},
     {"pcss", "07_pcss", {}, ""},
-    {"cube_map", "08_cube_maps", {"cube.filter=pcf"}, ""},
+    {"cube_map", "08_cube_maps", {"cube.filter=pcf", "cube.cache=off"}, ""},  // six faces every frame
     {"volumes", "09_shadow_volumes", {}, ""},
-    {"cascades", "10_cascades", {"light.index=2", "csm.shadow_distance=40"}, "csm.kernel"},
+    {"cascades", "10_cascades", {"light.index=2", "csm.shadow_distance=30", "csm.lambda=0.3"}, "csm.kernel"},
     {"ray_traced", "09_shadow_volumes", {"shadow.technique=ray_traced"}, ""},
 };
 
