@@ -47,6 +47,16 @@ def read(path):
         return f.read()
 
 
+def pfm(path):
+    """A one-channel PFM's floats."""
+    import struct
+    data = read(path)
+    lines = data.split(b"\n", 3)
+    w, h = map(int, lines[1].split())
+    little = float(lines[2]) < 0
+    return struct.unpack(("<" if little else ">") + "%df" % (w * h), lines[3][:4 * w * h])
+
+
 def demo_steps():
     labs = sorted(os.path.basename(os.path.dirname(d)) for d in glob.glob(os.path.join(ROOT, "labs/*/demo.json")))
     assert len(labs) == 10, "every lab has a demo.json (found %d)" % len(labs)
@@ -76,6 +86,12 @@ def present():
         "present.* changed the visibility buffer"
     assert read(os.path.join(OUT, "present-off.png")) != read(os.path.join(OUT, "present-on.png")), \
         "present.* changed nothing on screen"
+    # 4x MSAA resolves the visibility too: only edge pixels may change (by the mean of their samples).
+    msaa = os.path.join(OUT, "present-msaa.pfm")
+    run("lab03_solution", base + ["--quiet", "--frames", "3", "--set", "present.msaa=4", "--dump-visibility", msaa])
+    off, on = pfm(os.path.join(OUT, "present-off.pfm")), pfm(msaa)
+    changed = sum(1 for a, b in zip(off, on) if abs(a - b) > 0.01) / len(off)
+    assert 0 < changed < 0.05, "4x MSAA changed %.1f %% of the visibility buffer" % (100 * changed)
 
 
 def hosted():
