@@ -104,7 +104,7 @@ def main():
     ap.add_argument("--exe", default="build/showcase")
     ap.add_argument("--out", default="docs/showcase-table.md")
     ap.add_argument("--csv-dir", default="build/showcase-table")
-    ap.add_argument("--frames", type=int, default=10, help="timed frames per row")
+    ap.add_argument("--frames", type=int, default=30, help="timed frames per row")
     a = ap.parse_args()
     os.makedirs(a.csv_dir, exist_ok=True)
     print("showcase --table: sweeping (this takes a few minutes on a CPU)")
