@@ -1,0 +1,193 @@
+#!/usr/bin/env python3
+"""Rendering a deck's demo steps from the solution build, and the Markdown they go into (tools/slides/build.py)."""
+from __future__ import annotations
+
+import argparse
+import base64
+import datetime
+import glob
+import hashlib
+import html
+import html.parser
+import json
+import os
+import re
+import shlex
+import shutil
+import struct
+import subprocess
+import sys
+import time
+import zlib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from decks import *  # noqa: F401,F403  (Deck, BuildError, rel, the patterns)
+
+
+# The measured numbers a {{numbers:K}} line shows, in this order, when present and not null.
+NUMBER_LABELS = [
+    ("acne_percent", "acne", "%"),
+    ("leak_percent", "leak", "%"),
+    ("contact_gap_texels", "contact gap", "texels"),
+    ("area_mean_abs_percent", "area-light error", "%"),
+    ("pcf_diff_percent", "vs PCF", "%"),
+]
+
+
+# ----------------------------------------------------------------------------------------------
+# Rendering
+
+
+def png_size(path: Path) -> tuple:
+    with open(path, "rb") as f:
+        head = f.read(24)
+    if len(head) < 24 or head[:8] != b"\x89PNG\r\n\x1a\n" or head[12:16] != b"IHDR":
+        return None
+    return struct.unpack(">II", head[16:24])
+
+
+def sha256(path: Path) -> str:
+    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+
+
+def tail(text: str, lines: int = 25) -> str:
+    text = (text or "").rstrip()
+    return "\n".join("    " + ln for ln in text.splitlines()[-lines:]) if text else "    (nothing)"
+
+
+def render_command(prefix: str, deck: Deck, build_dir: Path, step: int, png: Path, rec: Path, measure: bool) -> list:
+    words = []
+    for w in shlex.split(prefix):
+        words.append(w.replace("{lab}", deck.lab).replace("{name}", deck.name).replace("{build_dir}", str(build_dir)))
+    words += ["--headless", "--size", RENDER_SIZE, "--demo-step", str(step), "--screenshot", str(png),
+              "--record", str(rec), "--quiet"]
+    if measure:
+        words.append("--metrics")
+    return words
+
+
+def render_steps(deck: Deck, prefix: str, build_dir: Path, out: Path, timeout: float, reuse: bool) -> None:
+    rdir = out / "renders" / deck.name
+    rdir.mkdir(parents=True, exist_ok=True)
+    wanted = sorted({u.step for u in deck.uses})
+    for k in wanted:
+        step = deck.steps[k - 1]
+        measure = step.get("measure") is True
+        png, rec = rdir / f"step{k:02d}.png", rdir / f"step{k:02d}.json"
+        cmd = render_command(prefix, deck, build_dir, k, png, rec, measure)
+        shown = " ".join(shlex.quote(c) for c in cmd)
+        exe = cmd[0] if os.sep in cmd[0] else shutil.which(cmd[0])
+        if not exe or not os.path.isfile(exe):
+            hint = ("build the labs first: ./workbook build" if prefix == DEFAULT_RENDERER
+                    else "check --render-cmd / $SLIDES_RENDER_CMD")
+            raise BuildError(f"lab {deck.lab} step {k}: the renderer {cmd[0]} does not exist ({hint})")
+        # The stamp names everything the render depends on that this script can see; with
+        # --reuse-renders an unchanged stamp skips the render (shaders read at run time are not in it).
+        st = os.stat(exe)
+        stamp = hashlib.sha256(json.dumps([cmd, step, json.loads(deck.demo.read_text()).get("settings"),
+                                           st.st_mtime_ns, st.st_size]).encode()).hexdigest()
+        stamp_file = rdir / f"step{k:02d}.stamp"
+        if reuse and png.is_file() and rec.is_file() and stamp_file.is_file() and stamp_file.read_text() == stamp:
+            print(f"slides: lab {deck.lab} step {k}: reusing {rel(png)}")
+        else:
+            for p in (png, rec, stamp_file):
+                p.unlink(missing_ok=True)
+            print(f"slides: lab {deck.lab} step {k}: rendering ({step.get('title', '')!s})", flush=True)
+            t0 = time.monotonic()
+            try:
+                proc = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=timeout)
+            except subprocess.TimeoutExpired as e:
+                err = e.stderr.decode(errors="replace") if isinstance(e.stderr, bytes) else (e.stderr or "")
+                raise BuildError(f"lab {deck.lab} step {k} ({rel(deck.source)}): the render took more than "
+                                 f"{timeout:g} s and was stopped\n  command: {shown}\n  its stderr (last lines):\n"
+                                 f"{tail(err)}") from e
+            except OSError as e:
+                raise BuildError(f"lab {deck.lab} step {k}: could not run the renderer: {e}\n  command: {shown}") from e
+            if proc.returncode != 0:
+                raise BuildError(f"lab {deck.lab} step {k} ({rel(deck.source)}): the render failed with exit "
+                                 f"status {proc.returncode}\n  command: {shown}\n  its stderr (last lines):\n"
+                                 f"{tail(proc.stderr or proc.stdout)}")
+            problem = None
+            size = png_size(png) if png.is_file() else None
+            if not png.is_file():
+                problem = f"it wrote no screenshot {rel(png)}"
+            elif not size:
+                problem = f"its screenshot {rel(png)} is not a PNG"
+            elif "x".join(map(str, size)) != RENDER_SIZE:
+                problem = f"its screenshot is {size[0]}x{size[1]}, not the {RENDER_SIZE} asked for"
+            elif not rec.is_file():
+                problem = f"it wrote no record {rel(rec)}"
+            if problem:
+                raise BuildError(f"lab {deck.lab} step {k} ({rel(deck.source)}): the renderer exited 0 but "
+                                 f"{problem}\n  command: {shown}\n  its stderr (last lines):\n{tail(proc.stderr)}")
+            stamp_file.write_text(stamp)
+            print(f"slides: lab {deck.lab} step {k}: rendered in {time.monotonic() - t0:.1f} s")
+        try:
+            record = json.loads(rec.read_text(encoding="utf-8"))
+        except ValueError as e:
+            raise BuildError(f"lab {deck.lab} step {k}: the record {rel(rec)} is not valid JSON: {e}\n"
+                             f"  command: {shown}") from e
+        if isinstance(record, dict) and record.get("status") not in (None, "ok"):
+            print(f"slides: warning: lab {deck.lab} step {k}: the record says status "
+                  f"{record.get('status')!r}: {record.get('warnings') or ''}")
+        deck.renders[k] = {"png": png, "json": rec, "record": record, "command": shown}
+
+
+def format_number(value: float) -> str:
+    v = abs(value)
+    if v != 0 and v < 1:
+        return f"{value:.2f}"
+    if v < 100:
+        return f"{value:.1f}"
+    return f"{value:.0f}"
+
+
+def numbers_line(deck: Deck, k: int, line: int) -> str:
+    record = deck.renders[k]["record"]
+    m = record.get("measurement") if isinstance(record, dict) else None
+    where = f"{rel(deck.source)}:{line}: {{{{numbers:{k}}}}}"
+    if not isinstance(m, dict):
+        raise BuildError(f"{where}: the record of lab {deck.lab} step {k} ({rel(deck.renders[k]['json'])}) "
+                         "has no \"measurement\" (was it rendered with --metrics?)\n"
+                         f"  command: {deck.renders[k]['command']}")
+    step = record.get("demo_step") or {}
+    said = step.get("numbers", "") if isinstance(step, dict) else ""
+    if " | " in said:  # a split screen: the presenter's own line, which measures each half on its own
+        halves = said.removeprefix("measured: ").split(" | ")
+        return "[" + " · ".join(h.strip().replace("%", "\u00a0%") for h in halves) + "]{.numbers}"
+    parts = []
+    for key, label, unit in NUMBER_LABELS:
+        v = m.get(key)
+        if isinstance(v, (int, float)) and not isinstance(v, bool):
+            parts.append(f"{label} {format_number(v)}\u00a0{unit}")
+    if not parts:
+        raise BuildError(f"{where}: the measurement of lab {deck.lab} step {k} has none of "
+                         f"{', '.join(k_ for k_, _, _ in NUMBER_LABELS)}")
+    return "[" + " · ".join(parts) + "]{.numbers}"
+
+
+def substituted_markdown(deck: Deck) -> str:
+    lines = list(deck.lines)
+    by_line = {}
+    for no, text in scannable_lines(deck.lines):
+        by_line[no] = text
+    for no, text in by_line.items():
+        line = lines[no - 1]
+        # Replace from the right so earlier offsets stay valid; `text` has inline code blanked.
+        spans = []
+        for m in IMAGE_RE.finditer(text):
+            fm = FIGURE_RE.match(m.group(2).strip("<>"))
+            if fm:
+                k = int(fm.group(1))
+                png = deck.renders[k]["png"]
+                target = f"renders/{deck.name}/{png.name}"
+                spans.append((m.start(2), m.end(2), target))
+        for m in NUMBERS_RE.finditer(text):
+            spans.append((m.start(), m.end(), numbers_line(deck, int(m.group(1)), no)))
+        for a, b, new in sorted(spans, reverse=True):
+            line = line[:a] + new + line[b:]
+        lines[no - 1] = line
+    return "\n".join(lines)
+
+
