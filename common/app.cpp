@@ -134,6 +134,9 @@ App::App(const Options& options, const std::string& title) : options_(options) {
   ctx_ = Context::create({options_.headless, frameSize_.x, frameSize_.y, title, true});
   if (!options_.bench.empty() && !options_.headless) glfwSwapInterval(0);  // measure, do not wait for vsync
   if (!ctx_->headless()) imgui_ = std::make_unique<ImGuiLayer>(ctx_->window());
+  // Keys are polled once a frame; sticky keys keep a tap shorter than a frame (a presenter's clicker
+  // sends Page Down that way) until it is seen.
+  if (!ctx_->headless()) glfwSetInputMode(ctx_->window(), GLFW_STICKY_KEYS, GLFW_TRUE);
   debug_ = std::make_unique<DebugViews>();
 }
 
