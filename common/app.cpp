@@ -163,16 +163,7 @@ void App::host(std::unique_ptr<Lab> lab) {
     const std::string title = "Lab " + lab_->board().number() + ": " + lab_->board().title();
     glfwSetWindowTitle(ctx_->window(), title.c_str());
   }
-  presenter_.reset(), step_ = 0;
-  const fs::path demo = fs::path(variant::kLabDir) / "demo.json";
-  try {
-    if (fs::exists(demo)) presenter_ = std::make_unique<Presenter>(demo, lab_->settings);
-  } catch (const UsageError& e) {  // a window still runs without its demo; --demo-step does not
-    if (options_.demoStep > 0) throw;
-    lab_->warn(e.what());
-  }
-  if (options_.demoStep > 0 && !presenter_) throw UsageError("--demo-step: " + demo.string() + " does not exist");
-  if (options_.demoStep > 0) showStep(options_.demoStep);
+  startPresenter();
   applyPresentation();  // (before init(): its programs are built with present.*)
   lab_->init();
   lab_->board_.probe();
@@ -366,7 +357,9 @@ void App::applyPresentation() {
 }
 
 void App::say(const std::string& text) const {
-  if (!options_.quiet) std::printf("%s\n", text.c_str());
+  if (options_.quiet) return;
+  std::printf("%s\n", text.c_str());
+  std::fflush(stdout);  // (a window's log is read while it runs: a presenter's steps, a screenshot's path)
 }
 
 }  // namespace wb

@@ -77,6 +77,7 @@ class App {
   void drawLab();
   void presentWindow();
   void saveWindowScreenshot(const std::string& path);
+  void startPresenter();
   void stepKeys(const std::function<bool(int)>& pressed);
   void applyPresentation();
   MeasureResult measureNow(bool report);

@@ -5,6 +5,7 @@
 #include "common/context.hpp"
 #include "common/image.hpp"
 #include "common/lab.hpp"
+#include "common/variant.hpp"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -68,6 +69,26 @@ void App::handleKeys() {
   if (pressed(GLFW_KEY_F12) || pressed(GLFW_KEY_P)) screenshotRequested_ = true;
   if (pressed(GLFW_KEY_H)) shell_.hidePanels = !shell_.hidePanels;
   stepKeys(pressed);
+}
+
+// The lab's demo.json (or --demo FILE): the presenter's steps for Page Down/Up and --demo-step. A
+// window without a readable demo still runs (and says why); asking for one makes it an error.
+void App::startPresenter() {
+  presenter_.reset(), step_ = 0;
+  const bool named = !options_.demo.empty(), needed = named || options_.demoStep > 0;
+  const fs::path demo = named ? fs::path(options_.demo) : fs::path(variant::kLabDir) / "demo.json";
+  if (!fs::exists(demo)) {
+    if (needed) throw UsageError("the demo " + demo.string() + " does not exist");
+    return;
+  }
+  try {
+    presenter_ = std::make_unique<Presenter>(demo, lab_->settings);
+  } catch (const UsageError& e) {
+    if (needed) throw;
+    lab_->warn(e.what());
+    return;
+  }
+  if (options_.demoStep > 0) showStep(options_.demoStep);
 }
 
 // Presenter mode: Page Down / Right the next step, Page Up / Left the one before, Escape leaves.

@@ -99,6 +99,8 @@ const OptionSpec kOptions[] = {
      "presenter step N of the lab's demo.json: its settings, camera and split screen (in a window, Page Down/Up "
      "step on)",
      [](Options& o, const std::string& v) { o.demoStep = parseCount("--demo-step", v); }},
+    {"--demo", "FILE", "the presenter's steps from FILE instead of the lab's demo.json (try an edited demo)",
+     [](Options& o, const std::string& v) { o.demo = v; }},
     {"--compare", "key=a,b", "split screen: the left half with key=a, the right half with key=b",
      [](Options& o, const std::string& v) { o.compare = parseCompare(v); }},
     {"--record", "F.json", "write the run's result as JSON: exercise states, measurements, files written",

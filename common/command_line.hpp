@@ -38,6 +38,7 @@ struct Options {
   glm::ivec2 size{960, 540};      ///< --size WxH
   int frames = -1;                ///< --frames N (-1: until the window closes; headless 1, bench 60)
   int demoStep = 0;               ///< --demo-step N: presenter step N of demo.json (0: none)
+  std::string demo;               ///< --demo FILE: the presenter's steps instead of the lab's demo.json
   std::vector<std::string> sets;  ///< --set key=value, in order
   std::vector<std::pair<std::string, std::vector<std::string>>> sweeps;  ///< --sweep key=a,b,...
   CompareChoice compare;                                                 ///< --compare key=a,b

@@ -74,6 +74,16 @@ def demo_steps():
                 assert got["numbers"].startswith("measured:"), "%s step %d measures: %s" % (exe, k, got)
     bad = run("lab02_solution", ["--demo-step", "99"], expect=2)
     assert "steps 1 to" in bad.stderr, bad.stderr
+    # --demo FILE: an edited demo is tried without touching the lab's; a malformed one is named.
+    mine = os.path.join(OUT, "my_demo.json")
+    json.dump({"steps": [{"title": "mine", "caption": "c", "settings": {"bias.method": "slope"}, "bookmark": 1}]},
+              open(mine, "w"))
+    record = os.path.join(OUT, "my_demo_record.json")
+    run("lab02_solution", ["--demo", mine, "--demo-step", "1", "--record", record, "--quiet"])
+    assert json.load(open(record))["demo_step"]["title"] == "mine"
+    json.dump({"steps": [{"title": "no caption"}]}, open(mine, "w"))
+    bad = run("lab02_solution", ["--demo", mine, "--demo-step", "1"], expect=2)
+    assert "step 1" in bad.stderr and "caption" in bad.stderr, bad.stderr
 
 
 def present():
