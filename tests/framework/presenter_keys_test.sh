@@ -15,7 +15,7 @@ for i in \$(seq 50); do w=\$(xdotool search --name "^Lab " 2>/dev/null | head -1
 [ -n "\$w" ] || { echo "no window appeared"; kill \$pid; exit 1; }
 sleep 1
 xdotool mousemove 320 300; xdotool windowfocus "\$w" 2>/dev/null
-for k in Next Next Next Prior; do xdotool key --delay 5 \$k; sleep 0.8; done
+for k in Next Next Next Prior; do xdotool key --delay 5 \$k; sleep 1.5; done
 kill \$pid; wait \$pid 2>/dev/null
 exit 0
 DRIVE
