@@ -88,7 +88,7 @@ int App::runLab(int argc, char** argv, std::unique_ptr<Lab> lab) {
     }
     configureSettings(*lab, options);
     if (options.listSettings) {
-      std::printf("settings of lab %s (%s):\n", lab->board().number().c_str(), lab->board().title().c_str());
+      std::printf("settings of %s:\n", lab->board().heading().c_str());
       lab->settings.list(std::cout);
       return 0;
     }
@@ -99,7 +99,7 @@ int App::runLab(int argc, char** argv, std::unique_ptr<Lab> lab) {
     if (options.headless && options.screenshot.empty() && options.visibility.empty() && options.bench.empty() &&
         !options.metrics && options.record.empty() && options.sweeps.empty())
       options.screenshot = "lab" + number + ".png";  // a headless run asked for nothing: a picture
-    App app(options, "Lab " + number + ": " + lab->board().title());
+    App app(options, lab->board().heading());
     app.host(std::move(lab));
     if (!options.sweeps.empty()) {
       if (const int code = app.sweep(); code != 0) return code;
@@ -160,8 +160,7 @@ void App::host(std::unique_ptr<Lab> lab) {
   lab->gpuScene = std::make_unique<GpuScene>(lab->scene);
   lab_ = std::move(lab);
   if (ctx_->window()) {
-    const std::string title = "Lab " + lab_->board().number() + ": " + lab_->board().title();
-    glfwSetWindowTitle(ctx_->window(), title.c_str());
+    glfwSetWindowTitle(ctx_->window(), lab_->board().heading().c_str());
   }
   startPresenter();
   applyPresentation();  // (before init(): its programs are built with present.*)
@@ -265,6 +264,7 @@ MeasureResult App::measureNow(bool report) {
       {target_, lab.scene, lab.alphaCutoff_, lab.light_, sceneLight, split, sides_, 16 << (2 * lab.lightSamples_)});
   shell_.measured = r.text;
   lastMeasure_ = r;
+  lab.measured(Presenter::numbersLine(r), split.on);
   if (!report) return r;
   const glm::ivec2 size = target_.size();
   if (imgui_) {

@@ -32,8 +32,10 @@ class ExerciseBoard {
   /// Reads `manifest` (labs/NN_name/exercises.json); a missing or malformed one leaves the list
   /// empty and prints a warning.
   explicit ExerciseBoard(const std::filesystem::path& manifest);
-  /// The lab's two-digit number ("01").
+  /// The lab's two-digit number ("01"; "00" for a program that is not a lab, the showcase).
   const std::string& number() const { return number_; }
+  /// "Lab 01: <title>", or the title alone for "00" (window titles, the info panel, --list-settings).
+  std::string heading() const { return number_ == "00" ? title_ : "Lab " + number_ + ": " + title_; }
   /// The lab's folder name ("01_depth_map").
   const std::string& lab() const { return lab_; }
   /// The lab's title.

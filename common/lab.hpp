@@ -66,6 +66,9 @@ class Lab {
   virtual void render() = 0;
   /// Adds the lab's own widgets to its Settings window.
   virtual void ui() {}
+  /// Called after the frame was measured against exact visibility (the Measure button, --metrics,
+  /// a presenter step), with the measured numbers on one line; `split` when the frame was split.
+  virtual void measured(const std::string& /*numbers*/, bool /*split*/) {}
 
   /// Builds a program that is hot-reloaded with the others; a broken edit keeps the last good one.
   Program& loadProgram(std::vector<ShaderStage> stages, std::string defines = {});

@@ -61,7 +61,8 @@ void infoPanel(const ShellInput& in, ShellState& state) {
   const ExerciseBoard& board = in.board;
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
   // "Lab 05: VSM" (the title up to its first colon) keeps the panel narrow; one id whatever the title.
-  const std::string title = "Lab " + board.number() + ": " + board.title().substr(0, board.title().find(':'));
+  const std::string heading = board.heading();  // (up to the title's own colon, if it has one)
+  const std::string title = heading.substr(0, heading.find(':', board.number() == "00" ? 0 : heading.find(':') + 1));
   ImGui::Begin((title + "###info").c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   ImGui::TextColored(kGrey, "%.1f fps | %s | %dx%d", ImGui::GetIO().Framerate, shortName(Context::renderer()).c_str(),
                      in.frameSize.x, in.frameSize.y);

@@ -69,6 +69,7 @@ class Showcase : public wb::Lab {
     own.onChange("showcase.technique", [this] { adopt(); });
     for (const auto& t : kTechniques) hosted.push_back(std::make_unique<wb::HostedLab>(t.lab, mainOf(t.lab), t.sets));
     frameMs.assign(kTechniques.size(), 0.0);
+    lastMeasured.assign(kTechniques.size(), "");
     adopt();
   }
 
@@ -92,22 +93,36 @@ class Showcase : public wb::Lab {
     h.render(*this, lastDt);
   }
 
+  // Each technique keeps its last measurement (Measure, whole frame), shown beside its frame time.
+  void measured(const std::string& numbers, bool split) override {
+    if (!split) lastMeasured[size_t(technique)] = numbers.substr(numbers.find(':') + 2);
+  }
+
   void ui() override {
-    ImGui::Separator();
-    ImGui::TextUnformatted("techniques (frame ms while shown)");
-    for (size_t k = 0; k < kTechniques.size(); ++k) {
-      const std::string row = std::string(kTechniques[k].name) + "  (lab " + std::string(kTechniques[k].lab, 2) + ")";
-      if (ImGui::Selectable(row.c_str(), int(k) == technique, 0, ImVec2(190, 0))) technique = int(k), adopt();
-      ImGui::SameLine(200);
-      if (frameMs[k] > 0)
-        ImGui::Text("%.1f ms", frameMs[k]);
-      else
-        ImGui::TextUnformatted("-");
-    }
-    hosted[size_t(technique)]->ui();
+    hosted[size_t(technique)]->ui();  // (the lab's own widgets, in the Settings window)
+    techniquesWindow();
   }
 
  private:
+  // A window of its own, bottom left (the Settings window is long): every technique, its frame time
+  // while shown and its last whole-frame measurement.
+  void techniquesWindow() {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(8, display.y - 8), ImGuiCond_FirstUseEver, ImVec2(0, 1));
+    ImGui::Begin("Techniques (frame ms while shown)", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    for (size_t k = 0; k < kTechniques.size(); ++k) {
+      const std::string row = std::string(kTechniques[k].name) + "  (lab " + std::string(kTechniques[k].lab, 2) + ")";
+      if (ImGui::Selectable(row.c_str(), int(k) == technique, 0, ImVec2(170, 0))) technique = int(k), adopt();
+      ImGui::SameLine(180);
+      if (frameMs[k] > 0)
+        ImGui::Text("%5.1f ms  %s", frameMs[k], lastMeasured[k].c_str());
+      else
+        ImGui::TextUnformatted("    -");
+    }
+    ImGui::TextDisabled("Measure (info panel) fills in a row's acne, leak and error against the truth");
+    ImGui::End();
+  }
+
   // The settings shown are the showcase's own and the chosen technique's (they write its lab's values).
   void adopt() {
     settings = own;
@@ -123,6 +138,7 @@ class Showcase : public wb::Lab {
   std::vector<std::unique_ptr<wb::HostedLab>> hosted;  // one per technique, in kTechniques' order
   wb::Settings own;                                    // showcase.* and camera.bookmark
   std::vector<double> frameMs;                         // per technique, smoothed
+  std::vector<std::string> lastMeasured;               // per technique, its last whole-frame measurement
   int technique = 2, shown = -1;                       // pcf
   int kernel = 2, mapSize = 2;                         // 3 taps, 1024 texels: seed 000's defaults
   float lastDt = 1.0f / 60;
