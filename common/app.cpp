@@ -50,19 +50,14 @@ void App::configureSettings(Lab& lab, const Options& o) {
 
 void App::loadScene(Lab& lab, const Options& o) {
   const fs::path path = o.scene.empty() ? fs::path(variant::kSourceDir) / lab.defaultScene() : fs::path(o.scene);
-  lab.scene = Scene::load(path);
-  if (o.vary >= 0) varyScene(lab.scene, uint32_t(o.vary));
-  if (lab.lightIndex >= int(lab.scene.lights.size()))
-    throw UsageError("light.index=" + std::to_string(lab.lightIndex) + " but " + path.string() + " has " +
-                     std::to_string(lab.scene.lights.size()) + " light(s)");
+  Scene scene = Scene::load(path);
+  if (o.vary >= 0) varyScene(scene, uint32_t(o.vary));
+  lab.adoptScene(std::move(scene), o.names("light.size"));
   if (lab.bookmark_ > int(lab.scene.cameras.size()))
     throw UsageError("camera.bookmark=" + std::to_string(lab.bookmark_) + " but " + path.string() + " has " +
                      std::to_string(lab.scene.cameras.size()) + " camera bookmark(s), 1 to " +
                      std::to_string(lab.scene.cameras.size()));
   lab.camera.pose = lab.scene.cameras[size_t(lab.bookmark_ - 1)];
-  // The scene's light size is the lab's light.size, unless the command line names that setting.
-  const float size = lab.scene.lights[size_t(lab.lightIndex)].size;
-  if (lab.lightSizeUsed_ && size > 0 && !o.names("light.size")) lab.lightSize_ = size;
 }
 
 int App::runLab(int argc, char** argv, std::unique_ptr<Lab> lab) {

@@ -56,14 +56,9 @@ void HostedLab::render(Lab& host, float dt) {
   Use use(*this);
   Lab& l = *lab_;
   if (!initialised_) {
-    if (l.lightIndex >= int(host.scene.lights.size()))
-      throw UsageError("light.index=" + std::to_string(l.lightIndex) + " but the scene has " +
-                       std::to_string(host.scene.lights.size()) + " light(s)");
-    l.scene = host.scene;
+    l.adoptScene(host.scene, false);
     l.target_ = host.target_, l.timers_ = host.timers_;
     l.gpuScene = std::make_unique<GpuScene>(l.scene);
-    const float size = l.scene.lights[size_t(l.lightIndex)].size;
-    if (l.lightSizeUsed_ && size > 0) l.lightSize_ = size;
     initialised_ = true;
     l.init();
     l.board_.probe();  // (some labs draw from the exercises' states)

@@ -50,6 +50,15 @@ void Lab::useLightSize(float initial) {
                      "rays per pixel from the surface to the light's disk in the measured reference");
 }
 
+void Lab::adoptScene(Scene s, bool keepLightSize) {
+  if (lightIndex >= int(s.lights.size()))
+    throw UsageError("light.index=" + std::to_string(lightIndex) + " but " + s.path.string() + " has " +
+                     std::to_string(s.lights.size()) + " light(s)");
+  scene = std::move(s);
+  const float size = scene.lights[size_t(lightIndex)].size;
+  if (lightSizeUsed_ && size > 0 && !keepLightSize) lightSize_ = size;
+}
+
 Program& Lab::loadProgram(std::vector<ShaderStage> stages, std::string defines) {
   programs_.push_back(Program::tryLoad(std::move(stages), std::move(defines)));
   return programs_.back();

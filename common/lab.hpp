@@ -170,6 +170,9 @@ class Lab {
  private:
   friend class App;        // the host: it loads the scene, calls the hooks and reads the shared state
   friend class HostedLab;  // a lab inside another lab (the showcase)
+  // Takes `scene` as the lab's: light.index must name one of its lights (else wb::UsageError), and
+  // that light's size becomes light.size unless `keepLightSize` (the command line names it).
+  void adoptScene(Scene scene, bool keepLightSize);
   bool runExercise(const std::string& id, const std::function<nlohmann::json()>& call,
                    const std::function<void(const nlohmann::json&)>& replay);
   std::string defaultScene_;

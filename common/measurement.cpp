@@ -75,7 +75,7 @@ const std::vector<float>* Measurement::pcfReference(const MeasureInput& in, int 
 }
 
 std::string Measurement::halves(const MeasureInput& in, const FloatImage& rendered, const FloatImage& exact,
-                                const std::vector<glm::vec4>& positions) {
+                                MeasureResult& out, const std::vector<glm::vec4>& positions) {
   const int w = rendered.width, h = rendered.height;
   std::string text;
   for (int side = 0; side < 2; ++side) {
@@ -87,12 +87,13 @@ std::string Measurement::halves(const MeasureInput& in, const FloatImage& render
         const size_t k = size_t(y) * size_t(w) + size_t(x);
         r.pixels.push_back(rendered.pixels[k]), e.pixels.push_back(exact.pixels[k]), pos.push_back(positions[k]);
       }
-    const VisibilityMetrics m = compareVisibility(r, e, pos);
-    text += strf("\n%s %s=%s: acne %.2f%%, leak %.2f%%, light in shadows %.2f%%", side ? "right" : "left ",
-                 in.split.key.c_str(), (side ? in.split.b : in.split.a).c_str(), 100 * m.acneRate(), 100 * m.leakRate(),
-                 100 * m.meanShadowLight());
+    MeasureResult::Half& half = out.halves.emplace_back();
+    half.setting = in.split.key + "=" + (side ? in.split.b : in.split.a);
+    const VisibilityMetrics& m = half.metrics = compareVisibility(r, e, pos);
+    text += strf("\n%s %s: acne %.2f%%, leak %.2f%%, light in shadows %.2f%%", side ? "right" : "left ",
+                 half.setting.c_str(), 100 * m.acneRate(), 100 * m.leakRate(), 100 * m.meanShadowLight());
     if (const auto* ref = pcfReference(in, side)) {
-      const ReferenceDifference d = compareWithReference(rendered, *ref, x0, x1);
+      const ReferenceDifference& d = half.reference = compareWithReference(rendered, *ref, x0, x1);
       text += strf("\n       against PCF %s: |difference| %.2f%%, lighter %.2f%%", footprint(in.sides[side]).c_str(),
                    100 * d.meanAbs(), 100 * d.lighterRate());
     } else {
@@ -171,7 +172,7 @@ MeasureResult Measurement::measure(const MeasureInput& in) {
         footprint(in.split.on ? in.sides[1] : in.light).c_str(), in.split.on ? ", whole frame" : "",
         100 * r.reference.meanAbs(), 100 * r.reference.lighterRate(), 100 * r.reference.darkerRate());
   }
-  const std::string split = in.split.on ? halves(in, rendered, exact, positions) : "";
+  const std::string split = in.split.on ? halves(in, rendered, exact, r, positions) : "";
   std::string seams;
   if (in.light.target == GL_TEXTURE_CUBE_MAP) {
     // The same lookups with rays: what differs is the map's doing, not the filter's.

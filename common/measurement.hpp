@@ -28,9 +28,16 @@ struct MeasureResult {
   std::vector<PenumbraSlab> penumbra;  ///< the scene's penumbra probe, if it has one and the light a size
   SeamError seams;                     ///< a cube map's seams against the rest (pixels = 0 for other maps)
   std::string notes;                   ///< why a measurement was skipped, if one was
-  std::string text;                    ///< the whole result for people
-  std::vector<uint8_t> heatmap;        ///< RGBA8: acne red, leaks blue (rows bottom to top)
-  double milliseconds = 0;             ///< time the measurement took
+  /// One half of a split-screen frame, measured on its own.
+  struct Half {
+    std::string setting;            ///< "key=value" that half shows
+    VisibilityMetrics metrics;      ///< acne, leak, light in shadows
+    ReferenceDifference reference;  ///< against PCF (pixels = 0 when not defined)
+  };
+  std::vector<Half> halves;      ///< in split screen, left then right (empty otherwise)
+  std::string text;              ///< the whole result for people
+  std::vector<uint8_t> heatmap;  ///< RGBA8: acne red, leaks blue (rows bottom to top)
+  double milliseconds = 0;       ///< time the measurement took
   /// The numbers as JSON: acne_percent, leak_percent, shadow_light_percent, contact_gap_texels
   /// (null when not defined), pcf_diff_percent and pcf_lighter_percent (null when not defined),
   /// area_mean_abs_percent and area_off_percent (null for a point light; over the pixels where the
@@ -62,7 +69,7 @@ class Measurement {
 
  private:
   const std::vector<float>* pcfReference(const MeasureInput& in, int side);
-  std::string halves(const MeasureInput& in, const FloatImage& rendered, const FloatImage& exact,
+  std::string halves(const MeasureInput& in, const FloatImage& rendered, const FloatImage& exact, MeasureResult& out,
                      const std::vector<glm::vec4>& positions);
   std::string areaText(const MeasureInput& in, const Light& light, const FloatImage& rendered, const FloatImage& exact,
                        const std::vector<glm::vec4>& positions, MeasureResult& r);

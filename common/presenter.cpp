@@ -156,15 +156,13 @@ void Presenter::drawBand(int k, const std::string& numbers, glm::ivec2 size) {
 }
 
 std::string Presenter::numbersLine(const MeasureResult& r) {
-  if (const auto left = r.text.find("\nleft "); left != std::string::npos) {  // split screen: each half
+  if (!r.halves.empty()) {  // split screen: each half on its own
     std::string out;
-    std::istringstream lines(r.text.substr(left + 1));
-    for (std::string line; std::getline(lines, line);) {
-      if (line.rfind("left ", 0) == 0 || line.rfind("right", 0) == 0) {
-        out += (out.empty() ? "" : "   |   ") + line.substr(0, line.find(", light in shadows"));
-      } else if (const auto at = line.find(", lighter "); at != std::string::npos) {  // against PCF
-        out += ", lighter than PCF " + line.substr(at + 10);
-      }
+    for (size_t side = 0; side < r.halves.size(); ++side) {
+      const MeasureResult::Half& h = r.halves[side];
+      out += strf("%s%s %s: acne %.2f%%, leak %.2f%%", side ? "   |   " : "", side ? "right" : "left ",
+                  h.setting.c_str(), 100 * h.metrics.acneRate(), 100 * h.metrics.leakRate());
+      if (h.reference.pixels > 0) out += strf(", lighter than PCF %.2f%%", 100 * h.reference.lighterRate());
     }
     return "measured: " + out;
   }

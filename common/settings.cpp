@@ -106,11 +106,12 @@ void Settings::onChange(const std::string& name, std::function<void()> f) {
 }
 
 void Settings::include(const Settings& other, const std::function<bool(const Setting&)>& keep) {
-  for (const auto& s : other.settings_) {
-    const bool known =
-        std::any_of(settings_.begin(), settings_.end(), [&](const Setting& t) { return t.name == s.name; });
-    if (!known && keep(s)) settings_.push_back(s);
-  }
+  for (const auto& s : other.settings_)
+    if (!has(s.name) && keep(s)) settings_.push_back(s);
+}
+
+bool Settings::has(const std::string& name) const {
+  return std::any_of(settings_.begin(), settings_.end(), [&](const Setting& s) { return s.name == name; });
 }
 
 std::string Settings::value(const std::string& name) const { return valueString(find(name)); }

@@ -43,6 +43,8 @@ class Settings {
   void include(const Settings& other, const std::function<bool(const Setting&)>& keep);
   /// Applies "key=value"; throws wb::UsageError saying what is accepted.
   void assign(const std::string& assignment);
+  /// True if a setting of that name is registered.
+  bool has(const std::string& name) const;
   /// The current value of a setting as text (what assign() accepts); throws wb::UsageError if unknown.
   std::string value(const std::string& name) const;
   /// Prints every setting with its current value, range and help.

@@ -15,11 +15,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// One file per test: ctest runs the tests of this file side by side, each in its own process.
 fs::path demoFile(const std::string& json) {
   const fs::path dir = fs::path(wb::variant::kOutputDir) / "presenter";
   fs::create_directories(dir);
-  std::ofstream(dir / "demo.json") << json;
-  return dir / "demo.json";
+  const fs::path file = dir / (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".json");
+  std::ofstream(file) << json;
+  return file;
 }
 
 std::string loadError(const std::string& json) {

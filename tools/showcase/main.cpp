@@ -88,7 +88,7 @@ class Showcase : public wb::Lab {
     const Technique& t = kTechniques[size_t(technique)];
     if (kernel > 0 && *t.kernelKey)
       h.lab().tunables().assign(std::string(t.kernelKey) + "=" + kKernels[size_t(kernel)]);
-    if (mapSize > 0 && hasSetting(h, "shadow.map_size"))
+    if (mapSize > 0 && h.lab().tunables().has("shadow.map_size"))
       h.lab().tunables().assign("shadow.map_size=" + kMapSizes[size_t(mapSize)]);
     h.render(*this, lastDt);
   }
@@ -128,11 +128,6 @@ class Showcase : public wb::Lab {
     settings = own;
     settings.include(hosted[size_t(technique)]->lab().tunables(), wb::HostedLab::shown);
     shown = technique;
-  }
-  static bool hasSetting(wb::HostedLab& h, const std::string& name) {
-    for (const auto& s : h.lab().tunables().all())
-      if (s.name == name) return true;
-    return false;
   }
 
   std::vector<std::unique_ptr<wb::HostedLab>> hosted;  // one per technique, in kTechniques' order

@@ -21,7 +21,6 @@ import sys
 TECHNIQUES = ["hard", "slope_bias", "pcf", "esm", "vsm", "evsm", "msm", "pcss", "cube_map", "volumes", "cascades",
               "ray_traced"]
 FILTERED = ["pcf", "vsm", "esm", "evsm"]  # seed 000's columns, in its order
-META = {"showcase.technique", "showcase.kernel", "showcase.map_size", "ray_traced.threads"}
 
 
 def sweep(exe, name, sweeps, frames, out_dir, metrics):
