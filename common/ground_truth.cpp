@@ -29,6 +29,32 @@ void accumulate(ReferenceDifference& d, float rendered, float reference) {
   ++d.pixels, d.absSum += std::abs(diff), d.lighter += diff > 0.1, d.darker += diff < -0.1;
 }
 
+// 1 for every pixel within `radius` pixels (either way, diagonals included) of an edge of the exact
+// shadow: a measured pixel (facing the light or away) whose 4-neighbour is measured and falls on
+// the other side of 0.5.
+std::vector<uint8_t> shadowRim(const FloatImage& exact, const std::vector<glm::vec4>& positions, int radius) {
+  const int w = exact.width, h = exact.height;
+  auto shadowed = [&](int x, int y) -> int {  // -1 where nothing is measured
+    const size_t i = size_t(y) * size_t(w) + size_t(x);
+    return std::isnan(exact.pixels[i]) || positions[i].w == 0 ? -1 : exact.pixels[i] < 0.5f;
+  };
+  std::vector<uint8_t> edge(exact.pixels.size()), rim(exact.pixels.size());
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const int s = shadowed(x, y), right = x + 1 < w ? shadowed(x + 1, y) : -1,
+                up = y + 1 < h ? shadowed(x, y + 1) : -1;
+      if (s < 0) continue;
+      if (right >= 0 && right != s) edge[size_t(y) * w + x] = edge[size_t(y) * w + x + 1] = 1;
+      if (up >= 0 && up != s) edge[size_t(y) * w + x] = edge[size_t(y + 1) * w + x] = 1;
+    }
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (edge[size_t(y) * w + x])
+        for (int v = std::max(0, y - radius); v <= std::min(h - 1, y + radius); ++v)
+          for (int u = std::max(0, x - radius); u <= std::min(w - 1, x + radius); ++u) rim[size_t(v) * w + u] = 1;
+  return rim;
+}
+
 }  // namespace
 
 FloatImage exactVisibility(const RayScene& rays, const Light& light, int width, int height,
@@ -57,13 +83,16 @@ FloatImage exactVisibility(const RayScene& rays, const Light& light, int width, 
 VisibilityMetrics compareVisibility(const FloatImage& rendered, const FloatImage& exact,
                                     const std::vector<glm::vec4>& positions) {
   VisibilityMetrics m;
+  const std::vector<uint8_t> rim = shadowRim(exact, positions, kRimPixels);
   for (size_t i = 0; i < exact.pixels.size(); ++i) {
     const float e = exact.pixels[i], r = rendered.pixels[i];
     if (std::isnan(e) || positions[i].w <= 0) continue;
+    const bool wrong = e >= 0.5f ? r < 0.5f : r >= 0.5f;  // (a NaN drawn is neither)
     if (e >= 0.5f)
-      ++m.litPixels, m.acnePixels += r < 0.5f;
+      ++m.litPixels, m.acnePixels += wrong;
     else
-      ++m.shadowedPixels, m.leakPixels += r >= 0.5f, m.shadowLight += std::clamp(double(r), 0.0, 1.0);
+      ++m.shadowedPixels, m.leakPixels += wrong, m.shadowLight += std::clamp(double(r), 0.0, 1.0);
+    m.rimPixels += rim[i], m.wrongOutsideRim += wrong && !rim[i];
   }
   return m;
 }

@@ -22,11 +22,13 @@ FloatImage exactVisibility(const RayScene& rays, const Light& light, int width, 
 
 /// How a rendered visibility buffer compares with the exact one.
 struct VisibilityMetrics {
-  long litPixels = 0;       ///< light-facing pixels the light really reaches
-  long acnePixels = 0;      ///< of those, drawn shadowed (visibility < 0.5)
-  long shadowedPixels = 0;  ///< light-facing pixels in a cast shadow
-  long leakPixels = 0;      ///< of those, drawn lit (visibility >= 0.5)
-  double shadowLight = 0;   ///< sum of the drawn visibility over those: partial light counts too
+  long litPixels = 0;        ///< light-facing pixels the light really reaches
+  long acnePixels = 0;       ///< of those, drawn shadowed (visibility < 0.5)
+  long shadowedPixels = 0;   ///< light-facing pixels in a cast shadow
+  long leakPixels = 0;       ///< of those, drawn lit (visibility >= 0.5)
+  double shadowLight = 0;    ///< sum of the drawn visibility over those: partial light counts too
+  long rimPixels = 0;        ///< light-facing pixels within kRimPixels of an edge of the exact shadow
+  long wrongOutsideRim = 0;  ///< acne and leak pixels farther than that from every edge
   /// Acne rate: the share of lit light-facing pixels drawn shadowed.
   double acneRate() const { return litPixels ? double(acnePixels) / litPixels : 0; }
   /// Light leak: the share of truly shadowed pixels drawn lit.
@@ -34,7 +36,22 @@ struct VisibilityMetrics {
   /// Bleeding: the mean drawn visibility over truly shadowed pixels (0 for a perfect shadow), which
   /// also counts the faint light that stays below the leak threshold.
   double meanShadowLight() const { return shadowedPixels ? shadowLight / double(shadowedPixels) : 0; }
+  /// The drawn shadow's area over the exact one (1 = the same number of light-facing pixels drawn
+  /// shadowed as are truly shadowed): below 1 the shadow shrank, above 1 it grew.
+  double areaRatio() const {
+    return shadowedPixels ? double(acnePixels + shadowedPixels - leakPixels) / double(shadowedPixels) : 1;
+  }
+  /// Acne and leaks away from the exact shadow's edges: their share of the light-facing pixels that
+  /// are not on the rim, where a map's texels may fall either way.
+  double wrongOutsideRimRate() const {
+    const long outside = litPixels + shadowedPixels - rimPixels;
+    return outside > 0 ? double(wrongOutsideRim) / double(outside) : 0;
+  }
 };
+
+/// The rim of an exact shadow's edges, in pixels each side: where a pixel and a neighbour disagree on
+/// lit or shadowed (a cast shadow's outline, a terminator, an object's outline over a shadow).
+constexpr int kRimPixels = 2;
 
 /// Compares `rendered` with `exact` on every pixel where `exact` is not NaN.
 VisibilityMetrics compareVisibility(const FloatImage& rendered, const FloatImage& exact,

@@ -38,7 +38,8 @@ struct MeasureResult {
   std::string text;              ///< the whole result for people
   std::vector<uint8_t> heatmap;  ///< RGBA8: acne red, leaks blue (rows bottom to top)
   double milliseconds = 0;       ///< time the measurement took
-  /// The numbers as JSON: acne_percent, leak_percent, shadow_light_percent, contact_gap_texels
+  /// The numbers as JSON: acne_percent, leak_percent, shadow_light_percent, shadow_area_ratio,
+  /// wrong_outside_rim_percent (acne and leaks beyond kRimPixels of the exact edges), contact_gap_texels
   /// (null when not defined), pcf_diff_percent and pcf_lighter_percent (null when not defined),
   /// area_mean_abs_percent and area_off_percent (null for a point light; over the pixels where the
   /// frame or the area-light reference is below 1), penumbra (rows), seam_error_percent,

@@ -76,12 +76,16 @@ class BiasLab : public wb::Lab {
     const wb::Program& p = *sceneProgram;
     beginCameraPass(p, lightViewProj, shadowMap.texture());
     p.set("u_lightDir", light.direction);
+    p.set("u_lightPos", light.position);
+    p.set("u_spot", light.type == wb::LightType::Spot ? 1 : 0);
     p.set("u_method", method);
     p.set("u_ready", ready ? 1 : 0);
     p.set("u_bias", method == None ? 0.0f : depthBias());
     p.set("u_slopeScale", slopeScale);
     p.set("u_maxBias", maxBias);
     p.set("u_normalOffset", normalOffset);
+    // A directional map's texel is one size everywhere; a spot map's grows with the depth along its
+    // axis, so the shader scales this one (the size at depth 1) by the fragment's depth.
     p.set("u_texelWorld", wb::texelWorldSize(lightViewProj, shadowMap.size()));
     p.set("u_radius", kernel);
     gpuScene->draw(p);

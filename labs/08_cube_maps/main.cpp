@@ -135,15 +135,18 @@ class CubeLab : public wb::Lab {
     throw wb::UsageError(scene.path.string() + " has no point light; lab 08 needs one (try scenes/cube_lantern.json)");
   }
 
-  // Near and far from the scene: the nearest and farthest vertex from the light (near at least 2 cm).
+  // Far from the scene: the farthest vertex from the light, since a face's depth along its axis is
+  // never more than the distance. Near is a plane, not a sphere: a point at distance r sits at depth
+  // r cos(angle off the axis) in its face, as little as r / sqrt(3) in a corner, so a near plane at
+  // the nearest vertex's distance clips the near side of casters seen off-axis, and their shadows
+  // lose their far rim. The depth written is a linear distance (08.2), so the projection's depth
+  // precision never matters and near can be small: 1 cm, which clips only what touches the bulb.
   glm::vec2 nearFarFromBounds(const glm::vec3& light) const {
-    float nearest = 1e30f, farthest = 0;
+    float farthest = 0;
     for (const auto& o : scene.objects)
-      for (const auto& v : o.mesh.vertices) {
-        const float d = glm::length(glm::vec3(o.model * glm::vec4(v.position, 1)) - light);
-        nearest = std::min(nearest, d), farthest = std::max(farthest, d);
-      }
-    return {std::max(0.02f, std::min(nearest, 0.5f * farthest)), farthest * 1.01f};
+      for (const auto& v : o.mesh.vertices)
+        farthest = std::max(farthest, glm::length(glm::vec3(o.model * glm::vec4(v.position, 1)) - light));
+    return {0.01f, std::max(farthest * 1.01f, 0.1f)};
   }
 
   // What the cube was last drawn with.

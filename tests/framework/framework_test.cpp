@@ -311,6 +311,25 @@ TEST(GroundTruth, MetricsCountAcneAndLeaks) {
   EXPECT_NEAR(m.leakRate(), 0.5, 1e-12);
 }
 
+// The area ratio counts the drawn shadow against the exact one; acne and leaks within kRimPixels of
+// an exact edge are on the rim, and only those beyond it count as wrong outside the rim.
+TEST(GroundTruth, AreaRatioAndTheRim) {
+  // 12 x 1: lit, then a shadow from x = 6 on (one edge, between x = 5 and 6).
+  wb::FloatImage exact{12, 1, std::vector<float>(12, 1.0f)};
+  for (int x = 6; x < 12; ++x) exact.pixels[size_t(x)] = 0;
+  wb::FloatImage rendered = exact;
+  rendered.pixels[0] = 0;   // acne 5 px from the edge: beyond the rim (edge pixels 5, 6; 2 px more: 3..8)
+  rendered.pixels[6] = 1;   // a leak on the edge: on the rim
+  rendered.pixels[11] = 1;  // a leak 5 px from the edge: beyond the rim
+  const std::vector<glm::vec4> pos(12, glm::vec4(0, 0, 0, 1));
+  const wb::VisibilityMetrics m = wb::compareVisibility(rendered, exact, pos);
+  EXPECT_EQ(m.rimPixels, 6);
+  EXPECT_EQ(m.wrongOutsideRim, 2);
+  EXPECT_NEAR(m.wrongOutsideRimRate(), 2.0 / 6, 1e-12);
+  EXPECT_NEAR(m.areaRatio(), (1.0 + 6 - 2) / 6, 1e-12);  // acne adds a pixel, the leaks take two
+  EXPECT_EQ(wb::compareVisibility(exact, exact, pos).areaRatio(), 1.0);
+}
+
 // The measurement sees the trade-off the handouts teach: no bias, heavy acne; the default bias,
 // almost none; a large bias, more light leaking (peter-panning) than the default.
 TEST(GroundTruth, TheSolutionsAcneAndLeaksFollowTheBias) {

@@ -12,14 +12,16 @@ uniform int u_hasTexture;
 uniform float u_alphaCutoff;
 uniform sampler2D u_shadowMap;
 uniform mat4 u_lightViewProj;
-uniform vec3 u_lightDir;       // the direction the (directional) light travels
+uniform vec3 u_lightDir;       // the direction the light travels (a spot light: its axis)
+uniform vec3 u_lightPos;       // a spot light's position
+uniform int u_spot;            // 1: a spot light, whose rays and texels differ from pixel to pixel
 uniform int u_method;          // the bias.method setting, numbered as below
 uniform int u_ready;           // 0 while the C++ exercise the method needs is a stub
 uniform float u_bias;          // shadow.bias: the constant part
 uniform float u_slopeScale;    // bias.slope_scale
 uniform float u_maxBias;       // bias.max
 uniform float u_normalOffset;  // bias.normal_offset, in texels
-uniform float u_texelWorld;    // one texel, in world units
+uniform float u_texelWorld;    // one texel, in world units (a spot light: at depth 1 along its axis)
 uniform int u_radius;          // PCF kernel radius: width 2r + 1
 const int CONSTANT = 1, SLOPE = 2, NORMAL_OFFSET = 5, RECEIVER_PLANE = 6;
 
@@ -34,7 +36,10 @@ void main() {
   vec3 albedo = u_color * texel.rgb;
   vec3 n = normalize(v_normal);
   if (!gl_FrontFacing) n = -n;
-  vec3 toLight = -u_lightDir;
+  // A spot light's rays fan out: the slope and the offset use this pixel's own direction to the light,
+  // and its texel is as wide as the map's frustum is at this depth.
+  vec3 toLight = u_spot != 0 ? normalize(u_lightPos - v_world) : -u_lightDir;
+  float texelWorld = u_spot != 0 ? u_texelWorld * dot(v_world - u_lightPos, u_lightDir) : u_texelWorld;
   float cosTheta = dot(n, toLight);
 
   vec3 coord = shadowCoord(v_world);
@@ -43,10 +48,12 @@ void main() {
   bool todo = u_ready == 0;
   float bias = 0.0;
   vec2 dzduv = vec2(0.0);
-  if (u_method == CONSTANT) bias = u_bias;
+  // Normal offset moves nothing where the surface faces the light squarely (1 - N.L = 0): there the
+  // depth comparison still needs the small constant bias.
+  if (u_method == CONSTANT || u_method == NORMAL_OFFSET) bias = u_bias;
   if (u_method == SLOPE) bias = slopeScaledBias(cosTheta, u_bias, u_slopeScale, u_maxBias);
   if (u_method == NORMAL_OFFSET) {
-    vec3 moved = normalOffsetPosition(v_world, n, toLight, u_texelWorld, u_normalOffset);
+    vec3 moved = normalOffsetPosition(v_world, n, toLight, texelWorld, u_normalOffset);
     todo = todo || wbIsTodo(moved);
     coord = shadowCoord(moved);
   }

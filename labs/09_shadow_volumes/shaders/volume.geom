@@ -31,11 +31,19 @@ void main() {
   if (silhouetteEdge(v2, v0, v_world[5], u_light) > 0.5) side(v2, v0);
   if (u_caps == 0) return;
   // The near cap is the triangle itself; the far cap is the triangle at infinity, turned round.
+  // The near cap lies on the caster's lit face and must fail the depth test there, so that z-fail
+  // counts it and the face comes out lit. Drawn through another stage than the scene, it would
+  // round to a unit of depth either way, pixel by pixel (speckles of shadow on lit casters): it is
+  // pushed back by 4 units of the 24-bit depth buffer (2^-24 each, 2^-23 in NDC), and fails everywhere.
+  const float capPush = 4.0 * exp2(-23.0);
   gl_Position = u_viewProj * vec4(v0, 1.0);
+  gl_Position.z += capPush * gl_Position.w;
   EmitVertex();
   gl_Position = u_viewProj * vec4(v1, 1.0);
+  gl_Position.z += capPush * gl_Position.w;
   EmitVertex();
   gl_Position = u_viewProj * vec4(v2, 1.0);
+  gl_Position.z += capPush * gl_Position.w;
   EmitVertex();
   EndPrimitive();
   gl_Position = u_viewProj * extrudeToInfinity(v0, u_light);
