@@ -66,7 +66,7 @@ class PcssLab : public wb::Lab {
     p.set("u_lightDir", glm::normalize(light.direction));
     p.set("u_spotCos", std::cos(glm::radians(light.angle)));
     p.set("u_lightSizeUV", light.size / nearWidth);
-    p.set("u_nearWidth", nearWidth);
+    p.set("u_lightSize", light.size);
     p.set("u_nearFar", glm::vec2(light.nearPlane, light.farPlane));
     p.set("u_searchSamples", kCounts[searchSamples]);
     p.set("u_filterSamples", kCounts[filterSamples]);

@@ -17,7 +17,7 @@ uniform vec3 u_lightDir;  // the spot's axis, the direction the light travels
 uniform float u_spotCos;  // cosine of the cone's half-angle
 uniform float u_lightSizeUV, u_minFilterUV, u_pcfWidthUV, u_bias;
 uniform vec2 u_nearFar;
-uniform float u_nearWidth;
+uniform float u_lightSize;  // the disk's diameter, world units
 uniform int u_searchSamples, u_filterSamples;
 
 // pcss.method=pcf: one fixed width everywhere, the same taps as PCSS's filter (the comparison).
@@ -41,8 +41,11 @@ void main() {
   vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
   float zReceiver = dot(v_world - u_lightPos, u_lightDir);  // along the light's axis
   bool facesLight = dot(n, toLight) > 0.0;
+  // A receiver tilted by theta changes depth by tan(theta) per unit across the search region (at the
+  // receiver, w_light (z - near) / near wide): a quarter of that keeps it from being its own blocker
+  // and keeps real blockers near a contact (README, "Receivers that are their own blockers").
   float cosTheta = max(dot(n, toLight), 0.05), tanTheta = sqrt(1.0 - cosTheta * cosTheta) / cosTheta;
-  float searchRadius = 0.5 * u_lightSizeUV * (zReceiver - u_nearFar.x) / zReceiver * u_nearWidth * zReceiver / u_nearFar.x;
+  float searchRadius = 0.5 * u_lightSize * (zReceiver - u_nearFar.x) / u_nearFar.x;
   float bias = u_bias + 0.25 * min(tanTheta, 3.0) * searchRadius;
   PcssSettings s = PcssSettings(u_lightSizeUV, u_nearFar, u_searchSamples, u_filterSamples, u_minFilterUV, bias);
   float cone = smoothstep(u_spotCos, mix(u_spotCos, 1.0, 0.1), dot(-toLight, u_lightDir));
