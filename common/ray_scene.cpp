@@ -164,7 +164,8 @@ bool RayScene::occluded(const glm::vec3& o, const glm::vec3& d, float tMin, floa
   return ray.tfar < 0;  // Embree sets tfar to -inf when something blocks the ray
 }
 
-float RayScene::firstHit(const glm::vec3& o, const glm::vec3& d, float tMin, float tMax, int* object) const {
+float RayScene::firstHit(const glm::vec3& o, const glm::vec3& d, float tMin, float tMax, int* object,
+                         glm::vec3* normal) const {
   RTCRayHit hit{};
   hit.ray = makeRay(o, d, tMin, tMax);
   hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -177,6 +178,8 @@ float RayScene::firstHit(const glm::vec3& o, const glm::vec3& d, float tMin, flo
 #endif
   const bool found = hit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
   if (object) *object = found ? int(hit.hit.geomID) : -1;
+  if (normal)  // the triangle's own normal (Embree's Ng: unnormalised, either side)
+    *normal = found ? glm::normalize(glm::vec3(hit.hit.Ng_x, hit.hit.Ng_y, hit.hit.Ng_z)) : glm::vec3(0);
   return found ? hit.ray.tfar : tMax;
 }
 

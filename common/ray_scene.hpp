@@ -26,8 +26,10 @@ class RayScene {
   /// True if scene object `object`'s lowest point lies within 1e-3 of height `y` (it rests there).
   bool restsOn(int object, float y) const;
   /// The smallest t in (tMin, tMax) where the ray meets a triangle, or tMax if it meets none;
-  /// `object` (if given) receives the index of the scene object hit, or −1.
-  float firstHit(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax, int* object = nullptr) const;
+  /// `object` (if given) receives the index of the scene object hit, or −1; `normal` (if given) the
+  /// unit normal of the triangle hit, on either side, or 0.
+  float firstHit(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax, int* object = nullptr,
+                 glm::vec3* normal = nullptr) const;
 
  private:
   struct Impl;

@@ -66,6 +66,19 @@ std::vector<glm::vec2> lightDiskPattern(int count) {
   return out;
 }
 
+namespace {
+// The normal of the triangle under `p`, on the side that faces `toward` (the light's centre, which
+// the pixel faces): a short ray from just above the surface back down to it; `toward`'s direction if
+// nothing is there.
+glm::vec3 surfaceNormal(const RayScene& rays, const glm::vec3& p, const glm::vec3& toward) {
+  constexpr float kStep = 2e-3f;
+  const glm::vec3 up = glm::normalize(toward - p);
+  glm::vec3 n(0);
+  if (rays.firstHit(p + kStep * up, -up, 0, 2 * kStep, nullptr, &n) >= 2 * kStep) return up;
+  return glm::dot(n, up) < 0 ? -n : n;
+}
+}  // namespace
+
 FloatImage areaLightVisibility(const RayScene& rays, const Light& light, const FloatImage& exact,
                                const std::vector<glm::vec4>& positions, int samples) {
   FloatImage out = exact;  // its NaN and facing-away pixels stay
@@ -81,13 +94,15 @@ FloatImage areaLightVisibility(const RayScene& rays, const Light& light, const F
     for (int x = 0; x < width; ++x) {
       const size_t i = size_t(y) * size_t(width) + size_t(x);
       if (std::isnan(out.pixels[i]) || positions[i].w <= 0) continue;
-      const glm::vec3 p(positions[i]);
+      const glm::vec3 p(positions[i]), n = surfaceNormal(rays, p, light.position);
       int seen = 0;
       for (const glm::vec3& s : points) {
         const float dist = glm::length(s - p);
         seen += !rays.occluded(p, (s - p) / dist, 1e-3f, dist);
       }
       out.pixels[i] = float(seen) / float(points.size());
+      for (const glm::vec3& s : points)  // part of the disk under the surface's own horizon: not compared
+        if (glm::dot(n, s - p) <= 0) out.pixels[i] = std::numeric_limits<float>::quiet_NaN();
     }
   });
   return out;

@@ -17,7 +17,10 @@ std::vector<glm::vec2> lightDiskPattern(int count);
 /// The visible fraction of `light`'s disk (diameter `light.size`, facing `light.direction`) from each
 /// pixel, starting from `exact` (exactVisibility() of the same frame): its NaN (background, outside
 /// the cone) and 0 on surfaces facing away are kept, every other pixel gets the share of the
-/// `samples` rays that reach the disk. With `light.size` 0 it is `exact`. Uses every core.
+/// `samples` rays that reach the disk. A pixel whose surface sees part of the disk under its own
+/// plane (within the light's angular radius of grazing) becomes NaN, not compared: there the truth
+/// mixes the shadow with the shading's horizon, which no shadow map models, and N·L makes the
+/// surface dark whatever the visibility. With `light.size` 0 it is `exact`. Uses every core.
 FloatImage areaLightVisibility(const RayScene& rays, const Light& light, const FloatImage& exact,
                                const std::vector<glm::vec4>& positions, int samples);
 

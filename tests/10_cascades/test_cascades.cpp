@@ -261,9 +261,12 @@ TEST(Lab10, Ex10_4_MeasuredNoShimmerWhenStabilised) {
   }
 }
 
-// Aliasing: shadow-map texels per screen pixel (debug.density writes it where the visibility goes).
-// Its spread over the view, the 95th percentile over the 5th, is smallest for logarithmic splits,
-// largest for uniform ones, and practical lies between (the solution at 480x270: 38.5, 62.1 and 212.1).
+// Aliasing: shadow-map texels per screen pixel on the ground (debug.density writes it where the
+// visibility goes, and 0 on every other surface, whose own slope no split can help). Its spread over
+// the view, the 95th percentile over the 5th, is smallest for logarithmic splits, largest for uniform
+// ones, and practical lies between (the solution at 480x270: 22.5, 31.4 and 159.5; over the grader's
+// variations, practical stays at least 1.3 times logarithmic's spread). Over the whole frame it was
+// not a test of the splits: distant foliage, 5% of the pixels, decided where the 5th percentile fell.
 namespace {
 double densitySpread(const std::string& scheme, std::string& failure) {
   const auto file = wb::test::testOutputDir() / ("density_" + scheme + ".pfm");

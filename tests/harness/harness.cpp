@@ -414,8 +414,9 @@ SceneMetrics measureScene(const std::string& id, const std::string& name, const 
 
 double penumbraGrowthRatio(const SceneMetrics& m) {
   auto slope = [&](int y) {  // of column y against the distance (column 0)
-    double sx = 0, sy = 0, sxx = 0, sxy = 0, n = double(m.penumbra.size());
-    for (const auto& r : m.penumbra) sx += r[0], sy += r[size_t(y)], sxx += r[0] * r[0], sxy += r[0] * r[size_t(y)];
+    double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0;
+    for (const auto& r : m.penumbra)
+      if (r[0] > 0) sx += r[0], sy += r[size_t(y)], sxx += r[0] * r[0], sxy += r[0] * r[size_t(y)], ++n;
     return (n * sxy - sx * sy) / (n * sxx - sx * sx);
   };
   return slope(2) / slope(1);

@@ -114,7 +114,9 @@ struct SceneMetrics {
 SceneMetrics measureScene(const std::string& id, const std::string& name, const std::vector<std::string>& args);
 
 /// How fast the rendered penumbra grows with the receiver-blocker distance, over how fast the
-/// theory's does: the ratio of their least-squares slopes over `m.penumbra` (1 is the theory).
+/// theory's does: the ratio of their least-squares slopes over the slabs of `m.penumbra` whose
+/// distance was measured (1 is the theory). A slab where the probe's ray found no blocker (distance
+/// 0, which a turn of the light by the grader's variation can cause) would pull the slope towards 0.
 double penumbraGrowthRatio(const SceneMetrics& m);
 
 /// Layer 2: renders a golden case with the lab itself (`--headless --size 256x256` plus `args`),

@@ -111,9 +111,18 @@ void main() {
 #endif
   if (w > 0.0 && !inMap(i + 1)) w = 0.0;  // a band point outside the next map: this one alone
 #ifdef WB_DENSITY  // the aliasing measure: how many texels of cascade i one pixel spans
-  vec2 t = (v_light[i].xy * 0.5 + 0.5) * vec2(textureSize(u_maps, 0).xy);
-  float texels = max(length(dFdx(t)), length(dFdy(t)));
-  wbWriteOutputs(vec3(clamp(log2(texels) / 8.0 + 0.5, 0.0, 1.0), 0.2, 0.2), texels, v_world, true);
+  // The screen derivatives of the world position, carried through cascade i's (affine) matrix: the
+  // derivatives of v_light[i] itself would mix cascades where a 2x2 quad straddles a split, and
+  // draw a row of huge densities along it.
+  vec2 texelsPerClip = 0.5 * vec2(textureSize(u_maps, 0).xy);
+  vec2 tx = (u_cascades[i] * vec4(dFdx(v_world), 0.0)).xy * texelsPerClip;
+  vec2 ty = (u_cascades[i] * vec4(dFdy(v_world), 0.0)).xy * texelsPerClip;
+  float texels = max(length(tx), length(ty));
+  // The measure (the visibility output) keeps the ground alone, where the split scheme is the only
+  // cause of change with distance; a wall's or a leaf's own slope to the light and the eye would mix
+  // in an aliasing no split can remove. The colour shows every surface.
+  wbWriteOutputs(vec3(clamp(log2(texels) / 8.0 + 0.5, 0.0, 1.0), 0.2, 0.2), n.y > 0.99 ? texels : 0.0, v_world,
+                 true);
 #else
 #ifdef WB_SMOOTH_BLEND  // both cascades, mixed
   float visibility = lookup(i);
