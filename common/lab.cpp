@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace fs = std::filesystem;
@@ -171,8 +172,13 @@ void Lab::renderFilteredShadowMap(const Program& writer, FilteredShadowMap& map,
   showLight(v);
 }
 
-void Lab::beginCameraPass(const Program& program, const glm::mat4& lightViewProj, GLuint shadowMap) {
+void Lab::beginCameraPass(const Program& program, const Light& light, const glm::mat4& lightViewProj,
+                          GLuint shadowMap) {
   bindFrameTarget();
+  program.set("u_wbLightType", int(light.type));
+  program.set("u_wbLightPos", light.position);
+  program.set("u_wbLightDir", glm::normalize(light.direction));
+  program.set("u_wbSpotCos", std::cos(glm::radians(light.angle)));
   program.set("u_viewProj", viewProj());
   program.set("u_lightViewProj", lightViewProj);
   program.set("u_alphaCutoff", alphaCutoff_);

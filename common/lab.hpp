@@ -121,8 +121,9 @@ class Lab {
   void renderFilteredShadowMap(const Program& writer, FilteredShadowMap& map, const float far[4], const Program& blur,
                                const Light& light, const glm::mat4& lightViewProj);
   /// PASS 2 of most labs: binds the frame target and sets what every camera pass reads: u_viewProj,
-  /// u_lightViewProj, u_alphaCutoff, and `shadowMap` on texture unit 0 as u_shadowMap.
-  void beginCameraPass(const Program& program, const glm::mat4& lightViewProj, GLuint shadowMap);
+  /// u_lightViewProj, u_alphaCutoff, `shadowMap` on texture unit 0 as u_shadowMap, and `light` for
+  /// wbToLight() and wbLightReach() (shaders/wb/lighting.glsl), so every technique is lit alike.
+  void beginCameraPass(const Program& program, const Light& light, const glm::mat4& lightViewProj, GLuint shadowMap);
   /// Binds the offscreen frame target (colour, visibility, position, depth + stencil) and its viewport.
   void bindFrameTarget() const { target_->bind(); }
   /// The frame target's size in pixels.

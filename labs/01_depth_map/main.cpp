@@ -60,13 +60,9 @@ class DepthMapLab : public wb::Lab {
     // PASS 2: the camera's view, with the shadow test per pixel.
     auto timer = timePass("lighting");
     const wb::Program& p = *sceneProgram;
-    beginCameraPass(p, lightViewProj, shadowMap.texture());
+    beginCameraPass(p, light, lightViewProj, shadowMap.texture());
     p.set("u_shadowsReady", ready ? 1 : 0);
     p.set("u_bias", depthBias());
-    p.set("u_lightType", spot ? 1 : 0);
-    p.set("u_lightPos", light.position);
-    p.set("u_lightDir", light.direction);
-    p.set("u_spotCos", std::cos(glm::radians(light.angle)));
     gpuScene->draw(p);
   }
 

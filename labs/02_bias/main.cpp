@@ -74,7 +74,7 @@ class BiasLab : public wb::Lab {
     // PASS 2: the camera's view; the shader applies the comparison-side remedies (02.1, 02.2, 02.5, 02.6).
     auto timer = timePass("lighting");
     const wb::Program& p = *sceneProgram;
-    beginCameraPass(p, lightViewProj, shadowMap.texture());
+    beginCameraPass(p, light, lightViewProj, shadowMap.texture());
     p.set("u_lightDir", light.direction);
     p.set("u_lightPos", light.position);
     p.set("u_spot", light.type == wb::LightType::Spot ? 1 : 0);

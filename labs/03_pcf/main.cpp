@@ -55,10 +55,9 @@ class PcfLab : public wb::Lab {
     // PASS 2: the camera's view, filtering the comparisons.
     auto timer = timePass("lighting");
     const wb::Program& p = *scenePrograms[method];
-    beginCameraPass(p, lightViewProj, shadowMap.texture());
+    beginCameraPass(p, light, lightViewProj, shadowMap.texture());
     glBindTextureUnit(1, shadowMap.texture());
     glBindSampler(1, compareSampler.id());
-    p.set("u_lightDir", light.direction);
     p.set("u_bias", depthBias());
     p.set("u_radius", kernel);
     p.set("u_spacing", spacing);

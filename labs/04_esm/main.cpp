@@ -63,10 +63,9 @@ class EsmLab : public wb::Lab {
     // PASS 2: one filtered lookup per pixel.
     auto timer = timePass("lighting");
     const wb::Program& p = *sceneProgram;
-    beginCameraPass(p, lightViewProj, map.texture());
+    beginCameraPass(p, light, lightViewProj, map.texture());
     glBindTextureUnit(1, map.depthTexture());
     p.set("u_depthMap", 1);
-    p.set("u_lightDir", light.direction);
     p.set("u_c", cUsed);
     p.set("u_logSpace", logSpace ? 1 : 0);
     p.set("u_fallback", fallback ? 1 : 0);

@@ -50,8 +50,7 @@ class VsmLab : public wb::Lab {
     // PASS 2: one filtered lookup per pixel.
     auto timer = timePass("lighting");
     const wb::Program& p = *sceneProgram;
-    beginCameraPass(p, lightViewProj, map.texture());
-    p.set("u_lightDir", light.direction);
+    beginCameraPass(p, light, lightViewProj, map.texture());
     p.set("u_minVariance", minVariance);
     p.set("u_bleeding", bleeding);
     gpuScene->draw(p);

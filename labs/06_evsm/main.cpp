@@ -68,8 +68,7 @@ class EvsmLab : public wb::Lab {
     // PASS 2: one filtered lookup per pixel.
     auto timer = timePass("lighting");
     const wb::Program& p = *sceneProgram;
-    beginCameraPass(p, lightViewProj, map.texture());
-    p.set("u_lightDir", light.direction);
+    beginCameraPass(p, light, lightViewProj, map.texture());
     p.set("u_cPos", pos);
     p.set("u_cNeg", neg);
     p.set("u_minVariance", minVariance);

@@ -59,12 +59,11 @@ class PcssLab : public wb::Lab {
     // PASS 2: the camera's view; PCSS per pixel (search, estimate, filter).
     auto timer = timePass("lighting");
     const wb::Program& p = *scenePrograms[method];
-    beginCameraPass(p, lightViewProj, shadowMap.texture());
+    beginCameraPass(p, light, lightViewProj, shadowMap.texture());
     const float nearWidth = 2 * light.nearPlane * std::tan(glm::radians(light.angle));  // the map at the near plane
     const float texel = 1.0f / float(shadowMapSize());
     p.set("u_lightPos", light.position);
     p.set("u_lightDir", glm::normalize(light.direction));
-    p.set("u_spotCos", std::cos(glm::radians(light.angle)));
     p.set("u_lightSizeUV", light.size / nearWidth);
     p.set("u_lightSize", light.size);
     p.set("u_nearFar", glm::vec2(light.nearPlane, light.farPlane));

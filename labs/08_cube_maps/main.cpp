@@ -76,7 +76,7 @@ class CubeLab : public wb::Lab {
     // PASS 2: the camera's view; the lookup needs only the direction from the light.
     auto timer = timePass("lighting");
     const wb::Program& p = *scenePrograms[filter];
-    beginCameraPass(p, faces[0], 0);
+    beginCameraPass(p, light, faces[0], 0);
     glBindTextureUnit(1, cube.texture());
     p.set("u_lightPos", light.position);
     p.set("u_far", nearFar.y);

@@ -82,14 +82,14 @@ class VolumeLab : public wb::Lab {
     const std::vector<bool> useZFail = countingPerCaster(l);
     const bool ready = adjacent_ && zpassOk && zfailOk && board().stateOf("09.2") == wb::ExerciseState::Implemented &&
                        board().stateOf("09.3") == wb::ExerciseState::Implemented;
-    if (technique == 1) return renderShadowMapped(light, l);
+    if (technique == 1) return renderShadowMapped(light);
 
     // PASS 1: the scene's depth, lit by the ambient term only (visibility 0).
     {
       auto timer = timePass("depth");
-      drawScene(l, false, !ready && technique == 0);
+      drawScene(light, false, !ready && technique == 0);
     }
-    if (technique == 2) return renderRayTraced(light, l);
+    if (technique == 2) return renderRayTraced(light);
     if (!ready) return;  // a stub: the frame shows the not-implemented pattern
 
     // PASS 2: the volumes into the stencil buffer only: no colour, no depth writes, depth clamp on
@@ -111,7 +111,7 @@ class VolumeLab : public wb::Lab {
       glStencilFunc(GL_EQUAL, 0, 0xFF);
       glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
       glDepthFunc(GL_LEQUAL);
-      drawScene(l, true, false);
+      drawScene(light, true, false);
       glDepthFunc(GL_LESS);
     }
     drawDebugViews(l, zpass, zfail);
@@ -126,11 +126,10 @@ class VolumeLab : public wb::Lab {
             s.back.depthFail,    s.back.depthPass,  s.caps ? 1u : 0u};
   }
 
-  void drawScene(const glm::vec4& l, bool lit, bool todo, const glm::mat4& lightViewProj = glm::mat4(1),
+  void drawScene(const wb::Light& light, bool lit, bool todo, const glm::mat4& lightViewProj = glm::mat4(1),
                  GLuint shadowMap = 0) {
     const wb::Program& p = *sceneProgram;
-    beginCameraPass(p, lightViewProj, shadowMap);
-    p.set("u_light", l);
+    beginCameraPass(p, light, lightViewProj, shadowMap);
     p.set("u_lit", lit ? 1 : 0);
     p.set("u_todo", todo ? 1 : 0);
     p.set("u_technique", technique);
@@ -138,7 +137,7 @@ class VolumeLab : public wb::Lab {
   }
 
   // The comparison: a 2048² shadow map with slope-scaled bias, looked up with hardware 2x2 PCF.
-  void renderShadowMapped(const wb::Light& light, const glm::vec4& l) {
+  void renderShadowMapped(const wb::Light& light) {
     const glm::mat4 lightViewProj = wb::lightViewProj(light, scene);
     map.resize(2048);
     {
@@ -151,13 +150,13 @@ class VolumeLab : public wb::Lab {
     auto timer = timePass("lighting");
     if (!compare.id()) compare = wb::makeComparisonSampler();
     glBindSampler(0, compare.id());
-    drawScene(l, true, false, lightViewProj, map.texture());
+    drawScene(light, true, false, lightViewProj, map.texture());
     glBindSampler(0, 0);
   }
 
   // The ground truth as a render mode: the CPU casts a ray through every pixel and one to the light
   // (on ray_traced.threads threads); the lighting pass reads the result.
-  void renderRayTraced(const wb::Light& light, const glm::vec4& l) {
+  void renderRayTraced(const wb::Light& light) {
     const glm::ivec2 size = frameSize();
     {
       auto timer = timePass("ray_tracing_cpu");
@@ -170,7 +169,7 @@ class VolumeLab : public wb::Lab {
     auto timer = timePass("lighting");
     glBindTextureUnit(1, traced.id());
     glDepthFunc(GL_LEQUAL);
-    drawScene(l, true, false);
+    drawScene(light, true, false);
     glDepthFunc(GL_LESS);
   }
 

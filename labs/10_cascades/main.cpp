@@ -101,7 +101,7 @@ class CascadeLab : public wb::Lab {
     // PASS 2: the camera's view; each pixel picks its cascade (10.5) and blends at the splits (10.6).
     auto timer = timePass("lighting");
     const wb::Program& p = sceneVariant();
-    beginCameraPass(p, c.matrices[0], 0);
+    beginCameraPass(p, light, c.matrices[0], 0);
     glBindTextureUnit(1, maps.texture());
     glBindTextureUnit(2, maps.texture());
     glBindTextureUnit(3, moments.texture());
@@ -110,7 +110,6 @@ class CascadeLab : public wb::Lab {
     p.set("u_view", camera.view());
     p.set("u_band", band);
     p.set("u_bias", depthBias());
-    p.set("u_lightDir", light.direction);
     p.set("u_kernel", 2 * kernel + 1);
     p.set("u_region", region);
     p.set("u_minVariance", minVariance);

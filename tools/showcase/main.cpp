@@ -20,9 +20,10 @@ extern const std::vector<std::pair<std::string, HostedLab::MainFunction>> kLabMa
 
 namespace {
 
-// One row of the showcase: a lab's solution with some of its settings. The scene's light 1 is a spot
-// light with a size, light 2 a point light (lab 08 takes the first point light) and light 3 a sun
-// (cascades are for directional lights).
+// One row of the showcase: a lab's solution with some of its settings. Every technique lights the
+// scene alike (Lab::beginCameraPass: the direction to the light per pixel and the spot's cone), from
+// light 0, a spot light with a size; two cannot: a cube map is a point light's (light 1) and
+// cascades are a sun's (light 2).
 struct Technique {
   const char* name;               // showcase.technique's value
   const char* lab;                // the lab whose solution draws it
@@ -39,7 +40,7 @@ const std::vector<Technique> kTechniques = {
     {"evsm", "06_evsm", {}, "prefilter.kernel"},
     {"msm", "06_evsm", {"evsm.technique=msm"}, "prefilter.kernel"},
     {"pcss", "07_pcss", {}, ""},
-    {"cube_map", "08_cube_maps", {"cube.filter=pcf", "cube.cache=off"}, ""},  // six faces every frame
+    {"cube_map", "08_cube_maps", {"light.index=1", "cube.filter=pcf", "cube.cache=off"}, ""},  // six faces every frame
     {"volumes", "09_shadow_volumes", {}, ""},
     {"cascades", "10_cascades", {"light.index=2", "csm.shadow_distance=30", "csm.lambda=0.3"}, "csm.kernel"},
     {"ray_traced", "09_shadow_volumes", {"shadow.technique=ray_traced"}, ""},

@@ -14,10 +14,6 @@ uniform sampler2D u_shadowMap;
 uniform mat4 u_lightViewProj;
 uniform int u_shadowsReady;  // 0 while the light's matrix (01.1 / 01.2) is not implemented
 uniform float u_bias;
-uniform int u_lightType;     // 0 directional, 1 spot
-uniform vec3 u_lightPos;
-uniform vec3 u_lightDir;     // the direction the light travels
-uniform float u_spotCos;     // cosine of the spot cone's half-angle
 
 void main() {
   vec4 texel = u_hasTexture != 0 ? texture(u_albedo, v_uv) : vec4(1.0);
@@ -31,12 +27,11 @@ void main() {
     vec3 coord = worldToShadowCoord(u_lightViewProj, v_world);
     if (!wbIsTodo(coord)) visibility = hardShadow(u_shadowMap, coord, u_bias);
   }
-  vec3 toLight = u_lightType == 0 ? -u_lightDir : normalize(u_lightPos - v_world);
+  vec3 toLight = wbToLight(v_world);
   bool facesLight = dot(n, toLight) > 0.0;
   if (wbIsTodo(visibility)) {  // an exercise is missing: show it, never fake a shadow
     wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
     return;
   }
-  float cone = u_lightType == 0 ? 1.0 : smoothstep(u_spotCos, mix(u_spotCos, 1.0, 0.1), dot(-toLight, u_lightDir));
-  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(cone), visibility), visibility, v_world, facesLight);
+  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(wbLightReach(v_world)), visibility), visibility, v_world, facesLight);
 }

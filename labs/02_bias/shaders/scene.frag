@@ -38,7 +38,7 @@ void main() {
   if (!gl_FrontFacing) n = -n;
   // A spot light's rays fan out: the slope and the offset use this pixel's own direction to the light,
   // and its texel is as wide as the map's frustum is at this depth.
-  vec3 toLight = u_spot != 0 ? normalize(u_lightPos - v_world) : -u_lightDir;
+  vec3 toLight = wbToLight(v_world);
   float texelWorld = u_spot != 0 ? u_texelWorld * dot(v_world - u_lightPos, u_lightDir) : u_texelWorld;
   float cosTheta = dot(n, toLight);
 
@@ -76,5 +76,5 @@ void main() {
     return;
   }
   float visibility = sum / float((2 * u_radius + 1) * (2 * u_radius + 1));
-  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(1.0), visibility), visibility, v_world, cosTheta > 0.0);
+  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(wbLightReach(v_world)), visibility), visibility, v_world, cosTheta > 0.0);
 }

@@ -14,7 +14,6 @@ uniform float u_alphaCutoff;
 uniform sampler2D u_shadowMap;  // the filtered exp(c z), or c z in log space
 uniform sampler2D u_depthMap;   // the unfiltered depth of the same render, for the fallback
 uniform mat4 u_lightViewProj;
-uniform vec3 u_lightDir;
 uniform float u_c;
 uniform int u_logSpace;
 uniform int u_fallback;
@@ -27,7 +26,7 @@ void main() {
   vec3 albedo = u_color * texel.rgb;
   vec3 n = normalize(v_normal);
   if (!gl_FrontFacing) n = -n;
-  vec3 toLight = -u_lightDir;
+  vec3 toLight = wbToLight(v_world);
   vec4 clip = u_lightViewProj * vec4(v_world, 1.0);
   vec3 coord = clip.xyz / clip.w * 0.5 + 0.5;
 
@@ -50,5 +49,5 @@ void main() {
     return;
   }
   bool facesLight = dot(n, toLight) > 0.0;
-  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(1.0), visibility), visibility, v_world, facesLight);
+  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(wbLightReach(v_world)), visibility), visibility, v_world, facesLight);
 }

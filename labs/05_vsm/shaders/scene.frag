@@ -13,7 +13,6 @@ uniform int u_hasTexture;
 uniform float u_alphaCutoff;
 uniform sampler2D u_shadowMap;  // filtered (M1, M2)
 uniform mat4 u_lightViewProj;
-uniform vec3 u_lightDir;
 uniform float u_minVariance;
 uniform float u_bleeding;
 
@@ -23,7 +22,7 @@ void main() {
   vec3 albedo = u_color * texel.rgb;
   vec3 n = normalize(v_normal);
   if (!gl_FrontFacing) n = -n;
-  vec3 toLight = -u_lightDir;
+  vec3 toLight = wbToLight(v_world);
   vec4 clip = u_lightViewProj * vec4(v_world, 1.0);
   vec3 coord = clip.xyz / clip.w * 0.5 + 0.5;
 
@@ -35,5 +34,5 @@ void main() {
     return;
   }
   bool facesLight = dot(n, toLight) > 0.0;
-  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(1.0), visibility), visibility, v_world, facesLight);
+  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(wbLightReach(v_world)), visibility), visibility, v_world, facesLight);
 }

@@ -13,7 +13,6 @@ uniform int u_hasTexture;
 uniform float u_alphaCutoff;
 uniform sampler2D u_shadowMap;  // filtered (w+, w+^2, w-, w-^2), or (z, z^2, z^3, z^4) for MSM
 uniform mat4 u_lightViewProj;
-uniform vec3 u_lightDir;
 uniform float u_cPos, u_cNeg, u_minVariance, u_bleeding;
 uniform int u_channels;
 uniform int u_msm;
@@ -25,7 +24,7 @@ void main() {
   vec3 albedo = u_color * texel.rgb;
   vec3 n = normalize(v_normal);
   if (!gl_FrontFacing) n = -n;
-  vec3 toLight = -u_lightDir;
+  vec3 toLight = wbToLight(v_world);
   vec4 clip = u_lightViewProj * vec4(v_world, 1.0);
   vec3 coord = clip.xyz / clip.w * 0.5 + 0.5;
   vec4 moments = texture(u_shadowMap, coord.xy);
@@ -36,5 +35,5 @@ void main() {
     return;
   }
   bool facesLight = dot(n, toLight) > 0.0;
-  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(1.0), visibility), visibility, v_world, facesLight);
+  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(wbLightReach(v_world)), visibility), visibility, v_world, facesLight);
 }

@@ -14,7 +14,6 @@ uniform sampler2D u_shadowMap;
 uniform mat4 u_lightViewProj;
 uniform vec3 u_lightPos;
 uniform vec3 u_lightDir;  // the spot's axis, the direction the light travels
-uniform float u_spotCos;  // cosine of the cone's half-angle
 uniform float u_lightSizeUV, u_minFilterUV, u_pcfWidthUV, u_bias;
 uniform vec2 u_nearFar;
 uniform float u_lightSize;  // the disk's diameter, world units
@@ -36,7 +35,7 @@ void main() {
   vec3 albedo = u_color * texel.rgb;
   vec3 n = normalize(v_normal);
   if (!gl_FrontFacing) n = -n;
-  vec3 toLight = normalize(u_lightPos - v_world);
+  vec3 toLight = wbToLight(v_world);
   vec4 clip = u_lightViewProj * vec4(v_world, 1.0);
   vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
   float zReceiver = dot(v_world - u_lightPos, u_lightDir);  // along the light's axis
@@ -48,7 +47,7 @@ void main() {
   float searchRadius = 0.5 * u_lightSize * (zReceiver - u_nearFar.x) / u_nearFar.x;
   float bias = u_bias + 0.25 * min(tanTheta, 3.0) * searchRadius;
   PcssSettings s = PcssSettings(u_lightSizeUV, u_nearFar, u_searchSamples, u_filterSamples, u_minFilterUV, bias);
-  float cone = smoothstep(u_spotCos, mix(u_spotCos, 1.0, 0.1), dot(-toLight, u_lightDir));
+  float cone = wbLightReach(v_world);
   if (cone == 0.0 || !facesLight) {  // no light reaches it anyway: spend no taps (a CPU renderer needs them)
     wbWriteOutputs(wbShade(albedo, n, toLight, vec3(0.0), 0.0), 0.0, v_world, facesLight);
     return;

@@ -34,5 +34,5 @@ void main() {
   }
   // A lantern: light falls off with distance, gently, so the room reads as lit from one point.
   float d = length(u_lightPos - v_world), falloff = min(1.2, 1.6 / (1.0 + 0.25 * d * d));
-  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(falloff), visibility), visibility, v_world, facesLight);
+  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(falloff * wbLightReach(v_world)), visibility), visibility, v_world, facesLight);
 }

@@ -14,7 +14,6 @@ uniform vec3 u_color;
 uniform sampler2D u_albedo;
 uniform int u_hasTexture;
 uniform float u_alphaCutoff;
-uniform vec4 u_light;  // w = 1: a point light at xyz; w = 0: xyz is the direction towards the light
 uniform int u_lit;
 uniform int u_todo;
 uniform int u_technique;  // 0 volumes, 1 shadow map, 2 ray traced
@@ -28,7 +27,7 @@ void main() {
   vec3 albedo = u_color * texel.rgb;
   vec3 n = normalize(v_normal);
   if (!gl_FrontFacing) n = -n;
-  vec3 toLight = normalize(u_light.w != 0.0 ? u_light.xyz - v_world : u_light.xyz);
+  vec3 toLight = wbToLight(v_world);
   bool facesLight = dot(n, toLight) > 0.0;
   if (u_todo != 0) {
     wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
@@ -41,5 +40,5 @@ void main() {
     visibility = c.w > 0.0 ? texture(u_shadowMap, uvz) : 1.0;
   }
   if (u_lit != 0 && u_technique == 2) visibility = texelFetch(u_rayTraced, ivec2(gl_FragCoord.xy), 0).r;
-  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(1.0), visibility), visibility, v_world, facesLight);
+  wbWriteOutputs(wbShade(albedo, n, toLight, vec3(wbLightReach(v_world)), visibility), visibility, v_world, facesLight);
 }

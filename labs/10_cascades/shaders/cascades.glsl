@@ -23,7 +23,6 @@ uniform float u_splitNear[4];  // the near end
 uniform mat4 u_view;  // (cascades.vert)
 uniform int u_count, u_ready;
 uniform float u_band, u_bias;
-uniform vec3 u_lightDir;
 uniform int u_kernel;            // csm.kernel: PCF taps per side
 uniform vec2 u_uvPerWorld[4];    // map coordinates per world unit, along the map's x and y
 uniform float u_tapWorld;        // the tap spacing: cascade 0's texel, in world units
@@ -92,7 +91,7 @@ void main() {
   vec3 albedo = u_color * texel.rgb;
   vec3 n = normalize(v_normal);
   if (!gl_FrontFacing) n = -n;
-  vec3 toLight = -u_lightDir;
+  vec3 toLight = wbToLight(v_world);
   bool facesLight = dot(n, toLight) > 0.0;
   float depth = v_depth;
   vec4 splits = vec4(u_splits[0], u_splits[1], u_splits[2], u_splits[3]);
@@ -135,7 +134,7 @@ void main() {
     wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
     return;
   }
-  vec3 colour = wbShade(albedo, n, toLight, vec3(1.0), visibility);
+  vec3 colour = wbShade(albedo, n, toLight, vec3(wbLightReach(v_world)), visibility);
 #ifdef WB_TINT
   colour *= mix(cascadeTint(i), cascadeTint(min(i + 1, 3)), w);
 #endif
