@@ -29,6 +29,9 @@ class CubeLab : public wb::Lab {
     settings.addChoice("cube.cache", cache, {"off", "on"},
                        "on: draw the six faces only when the light, the map or its shader changes (the lantern "
                        "is static); off: every frame, to time the fill");
+    settings.addChoice("cube.slope_bias", slopeBias, {"off", "on"},
+                       "on: the hard test adds half a texel's change of distance on sloped faces (tan of the "
+                       "angle to the light) to the bias; off: the constant bias alone");
     settings.assign("shadow.map_size=512");  // per face: six of them
     useDepthBias(0.03f, 0.5f, "subtracted from the distance to the light, in world units (the map stores distances)");
     useLightFaces();
@@ -81,6 +84,7 @@ class CubeLab : public wb::Lab {
     p.set("u_lightPos", light.position);
     p.set("u_far", nearFar.y);
     p.set("u_bias", depthBias());
+    p.set("u_slopeScale", slopeBias ? 0.5f : 0.0f);  // half a texel: a sample is that far from its centre
     p.set("u_radius", radius);
     p.set("u_samples", 16 << samples);
     gpuScene->draw(p);
@@ -172,6 +176,7 @@ class CubeLab : public wb::Lab {
   int cache = 1;         // on: a static lantern's cube is drawn once
   int method = 0;        // six passes
   int filter = 0;        // hard: 16 cube lookups a pixel (pcf) cost a CPU renderer 35 ms more
+  int slopeBias = 1;     // on: no acne on faces nearly edge-on to the light (the truth suite's finding)
   int samples = 0;       // 16 offsets
   float radius = 0.04f;  // world units
 };

@@ -13,6 +13,7 @@ uniform float u_alphaCutoff;
 layout(binding = 1) uniform samplerCube u_cube;
 uniform vec3 u_lightPos;
 uniform float u_far, u_bias, u_radius;
+uniform float u_slopeScale;  // cube.slope_bias: 0.5 (half a texel) or 0
 uniform int u_samples;
 
 void main() {
@@ -24,9 +25,17 @@ void main() {
   vec3 toLight = normalize(u_lightPos - v_world);
   bool facesLight = dot(n, toLight) > 0.0;
 #if CUBE_FILTER == 1
+  // (PCF keeps the constant bias: its exact reference, the same 3D taps ray-traced, uses it too.)
   float visibility = cubePcf(u_cube, v_world, u_lightPos, u_far, u_bias, u_radius, u_samples);
 #else
-  float visibility = cubeShadow(u_cube, v_world, u_lightPos, u_far, u_bias);
+  // The hard test's bias grows with the slope: a texel is about 2 d / size wide at distance d (a face
+  // spans 90 degrees), and a surface at angle t to the light changes its distance by tan t across
+  // it; a sample lies within half a texel of its texel's centre. A constant bias alone is too small
+  // on faces nearly edge-on to the light (acne: 3% of a shadow's area at 1024 x 1024 a face).
+  float cosT = clamp(dot(n, toLight), 0.1, 1.0);
+  float texelWorld = 2.0 * length(u_lightPos - v_world) / float(textureSize(u_cube, 0).x);
+  float slopeBias = u_slopeScale * texelWorld * sqrt(1.0 - cosT * cosT) / cosT;
+  float visibility = cubeShadow(u_cube, v_world, u_lightPos, u_far, u_bias + slopeBias);
 #endif
   if (wbIsTodo(visibility)) {  // a stub: show it, never fake a shadow
     wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
