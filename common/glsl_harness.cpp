@@ -197,6 +197,12 @@ std::vector<glm::vec4> runGlslKernel(const std::string& functions, const fs::pat
   return runGlslKernelWithSamplers(functions, origin, body, count, stride, inputs, typed);
 }
 
+namespace {
+double g_lastKernelMs = 0.0;
+}  // namespace
+
+double lastKernelMilliseconds() { return g_lastKernelMs; }
+
 std::vector<glm::vec4> runGlslKernelWithSamplers(const std::string& functions, const fs::path& origin,
                                                  const std::string& body, int count, int stride,
                                                  const std::vector<glm::vec4>& inputs,
@@ -224,8 +230,16 @@ std::vector<glm::vec4> runGlslKernelWithSamplers(const std::string& functions, c
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
+  GLuint query = 0;
+  glGenQueries(1, &query);
+  glBeginQuery(GL_TIME_ELAPSED, query);
   glDispatchCompute(GLuint((count + 63) / 64), 1, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glEndQuery(GL_TIME_ELAPSED);
+  GLuint64 nanoseconds = 0;
+  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &nanoseconds);  // waits for the dispatch
+  glDeleteQueries(1, &query);
+  g_lastKernelMs = double(nanoseconds) * 1e-6;
   std::vector<glm::vec4> result(static_cast<size_t>(count));
   glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(count * sizeof(glm::vec4)), result.data());
   for (size_t t = 0; t < textures.size(); ++t)

@@ -76,6 +76,11 @@ std::vector<glm::vec4> runGlslKernel(const std::string& functions, const std::fi
                                      const std::string& body, int count, int stride,
                                      const std::vector<glm::vec4>& inputs, const std::vector<GLuint>& textures = {});
 
+/// The GPU time of the last runGlslKernel() dispatch, in milliseconds (a timer query around it):
+/// the judge holds a student's kernel against the reference's to catch endless loops, which
+/// llvmpipe cuts off after 65535 iterations instead of hanging.
+double lastKernelMilliseconds();
+
 /// runGlslKernel() with each texture's sampler type (or Auto) and sampler object given.
 std::vector<glm::vec4> runGlslKernelWithSamplers(const std::string& functions, const std::filesystem::path& origin,
                                                  const std::string& body, int count, int stride,

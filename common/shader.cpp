@@ -1,6 +1,7 @@
 #include "common/shader.hpp"
 
 #include "common/error.hpp"
+#include "common/include_policy.hpp"
 #include "common/variant.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -38,6 +39,7 @@ void expand(const std::string& rawText, const fs::path& origin, const std::strin
   const std::string text = withoutBomAndCr(rawText);
   const int index = static_cast<int>(src.files.size());
   src.files.push_back(origin);
+  const auto allowed = exerciseIncludes(origin);  // a student's file: only its stub's includes
   static const std::regex includeRe(R"(^\s*#\s*include\s+\"([^\"]+)\")");
   static const std::regex thisFileRe("^#line (\\d+) " + std::to_string(kThisFileSource) + "$");
   std::istringstream in(text);
@@ -48,10 +50,11 @@ void expand(const std::string& rawText, const fs::path& origin, const std::strin
     if (s.rfind("#version", 0) == 0) {
       out << s << "\n" << defines << "#line " << line + 1 << " " << index << "\n";
     } else if (std::regex_search(s, m, includeRe)) {
+      fs::path target = allowed ? resolveExerciseInclude(m[1].str(), origin, line, *allowed) : fs::path();
       // The search path comes first, so a solution's or an overlay's exercise.glsl wins over the
       // stub that sits next to the including file.
-      fs::path target = origin.parent_path() / m[1].str();
-      for (const auto& dir : path)
+      if (!allowed) target = origin.parent_path() / m[1].str();
+      for (const auto& dir : allowed ? std::vector<fs::path>{} : path)
         if (fs::exists(dir / m[1].str())) {
           target = dir / m[1].str();
           break;

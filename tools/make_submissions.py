@@ -38,6 +38,10 @@ The red team (cheats score zero; honest oddities score full marks):
   drirc_poison         full, with C++ that leaves a Mesa configuration in /tmp/.drirc which would
                        stop the judge's OpenGL context: full marks, and every later submission too
   tests/grading/redteam/*  cheats a reviewer wrote (see its README), when lab 01 is in the class
+  tools/redteam.py     the second red team's cheats on the sandbox: GLSL includes of the reference,
+                       a C++ include of a second copy (--second-copy DIR), IPC and /tmp smuggling,
+                       memory and fork bombs, an endless loop that leaves the result as it was, a
+                       link error (see its doc)
 
 DIR/expected.json gives the score each should get and the exercises it should lose, computed from
 labs/*/exercises.json: the grader is held against it by tests/grading.
@@ -49,6 +53,8 @@ import shutil
 import sys
 import zipfile
 from pathlib import Path
+
+import redteam
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -293,6 +299,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("dir")
     ap.add_argument("--labs", help="only these labs, e.g. 01,02")
+    ap.add_argument("--second-copy", help="a folder holding a second copy of the solutions (solutions/NN_name/...), "
+                                          "for the cpp_include_copy cheat")
     args = ap.parse_args()
     only = [x.strip().zfill(2) for x in args.labs.split(",")] if args.labs else None
     the_labs = labs(only)
@@ -409,6 +417,11 @@ static_assert(CompileTimeSteps<800>::value == 800, "800 steps");
 
     if cpp and glsl:
         red_team(out, full, expect, cpp, glsl, points, the_labs)
+
+        def stubs_of(name):
+            write_tree(out / name, lambda lab: ROOT / "labs" / lab, the_labs)
+            return out / name
+        redteam.sandbox_cheats(out, full, expect, cpp, glsl, the_labs, stubs_of, args.second_copy, ROOT)
 
     (out / "expected.json").write_text(json.dumps(expected, indent=2) + "\n")
     print(f"wrote {len(expected)} submissions to {out} (expected scores in expected.json)")

@@ -22,7 +22,10 @@ reasons = {"compile_error": "does not compile", "segfault": "SIGSEGV", "endless_
            "endless_loop_glsl": ("timed out", "WRONG"),  # llvmpipe ends any shader loop after 65535 turns
            "one_wrong": "WRONG", "stubs": "NOT IMPLEMENTED", "archive": "not in the submission",
            "endless_build": "the build timed out after", "forged_report": "NOT IMPLEMENTED",
-           "symlink": "is a link", "empty_glsl": "ERROR"}
+           "symlink": "is a link", "empty_glsl": "ERROR", "memory_bomb": "used more than 2 GiB of memory",
+           "glsl_include_relative": "is not allowed", "glsl_include_deeper": "is not allowed",
+           "glsl_include_absolute": "is not allowed", "link_error": "undefined reference to",
+           "glsl_endless_same": ("longer than the reference", "timed out")}
 root = Path(__file__).resolve().parent.parent.parent
 
 rows = {r["student"]: r for r in csv.DictReader(open(grades / "gradebook.csv"))}
@@ -85,7 +88,7 @@ for name in expected:
     leaked = [l for l in solution_lines if l in text]
     check(not leaked, f"{name}: results.json shows solution code: {leaked[:2]}")
     # The held-out tests and their scenes likewise (leak_secrets throws whatever it could read).
-    for mark in ("LEAKED", "HELDOUT ", "REQUEST "):
+    for mark in ("LEAKED", "HELDOUT ", "REQUEST ", "SMUGGLED"):
         check(mark not in text, f"{name}: results.json shows a file its code read: {text[text.find(mark):][:200]}")
 
 # Nothing a runner wrote landed outside its own folders (write_other tries every folder it can reach).
@@ -124,12 +127,29 @@ if os.geteuid() == 0:
     left = []
     for status in Path("/proc").glob("[0-9]*/status"):
         try:
-            uid = int(next(l for l in status.read_text().splitlines() if l.startswith("Uid:")).split()[1])
-        except (OSError, StopIteration, ValueError):
+            lines = status.read_text().splitlines()
+            uid = int(next(l for l in lines if l.startswith("Uid:")).split()[1])
+            zombie = any(l.startswith("State:") and "Z" in l.split()[1] for l in lines)
+        except (OSError, StopIteration, ValueError, IndexError):
             continue
-        if 61000 <= uid < 61600:  # runners (61000 + k) and builders (61500 + k)
+        # (a zombie has ended: an orphan of the sandbox waits there until init reaps it)
+        if 61000 <= uid < 61600 and not zombie:  # runners (61000 + k) and builders (61500 + k)
             left.append(f"pid {status.parent.name} (uid {uid})")
     check(not left, f"processes of the sandbox's users outlived grading: {left}")
+# No System V IPC object of theirs is left either (ipc_smuggle makes one in every held-out run).
+if os.geteuid() == 0:
+    for kind in ("shm", "sem", "msg"):
+        try:
+            lines = Path(f"/proc/sysvipc/{kind}").read_text().splitlines()
+        except OSError:
+            continue
+        head = lines[0].split() if lines else []
+        owned = [l for l in lines[1:] if "uid" in head and 61000 <= int(l.split()[head.index("uid")]) < 61600]
+        check(not owned, f"System V {kind} objects of the sandbox's users outlived grading: {owned[:3]}")
+# The instructor is told which protections were in force.
+environment = json.loads((grades / "full" / "results.json").read_text())["tests"][-1]["output"] \
+    if (grades / "full" / "results.json").exists() else ""
+check("limits:" in environment, f"the grading environment does not state the sandbox's limits: {environment[:300]}")
 for p in problems:
     print("FAIL:", p)
 print(f"{len(expected)} submissions checked: " + ("all as expected" if not problems else f"{len(problems)} problems"))

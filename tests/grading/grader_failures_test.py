@@ -24,6 +24,9 @@ def exercise_tests(res):
 class FakeSandbox:
     notes, user = [], "the test's user"
 
+    def protections(self):
+        return "a fake sandbox (limits: none)"
+
 
 class FakeWorkspace:
     """Takes the exercise files and builds nothing."""
@@ -44,6 +47,9 @@ class FakeWorkspace:
 
     def after_killed_build(self, labs):
         pass
+
+    def uids(self):
+        return set()
 
 
 class BrokenBuild(grade.Grader):
@@ -66,6 +72,9 @@ class BrokenSecondLab(grade.Grader):
 
     def grade_exercise(self, lab, e, tests, broken, replay_uses=()):
         return True, [], [], None, False
+
+    def untouched(self, lab, files):  # (the empty submission is not the stubs here: every test passes)
+        return False
 
 
 labs = grade.load_labs(["01", "02"])

@@ -8,7 +8,12 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 out=${1:?usage: run_synthetic_class.sh OUTPUT_DIR}
 rm -rf "$out" && mkdir -p "$out"
-/usr/bin/python3 "$root/tools/make_submissions.py" "$out/submissions" --labs 01,02
+# A second copy of the solutions elsewhere on the machine, readable by everyone (an instructor's
+# other clone): the sandbox must keep it out of reach (cpp_include_copy).
+copy=/opt/wb-second-copy-$$
+trap 'rm -rf "$copy"' EXIT
+mkdir -p "$copy" && cp -r "$root/solutions" "$copy/" && chmod -R a+rX "$copy"
+/usr/bin/python3 "$root/tools/make_submissions.py" "$out/submissions" --labs 01,02 --second-copy "$copy"
 /usr/bin/python3 "$root/tools/grade.py" --batch "$out/submissions" --out "$out/grades" --labs 01,02 --jobs 1 \
   --timeout 20 --build-timeout 20
 cat "$out/grades/summary.md"

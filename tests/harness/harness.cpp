@@ -105,8 +105,26 @@ std::vector<glm::vec4> runExercise(const std::string& id, const std::string& bod
   // GLSL is evaluated by whoever decides: a runner has nothing to record (it never sees the
   // solution's chunks), and a judge runs the submission's chunk itself, in the GPU driver.
   if (tapeMode() == TapeMode::Record) return std::vector<glm::vec4>(size_t(count) * size_t(stride));
-  return runGlslKernel(isolatedExerciseSource("exercise.glsl", id), submittedShaderFile("exercise.glsl"), body, count,
-                       stride, inputs, std::vector<GLuint>(textures.begin(), textures.end()));
+  const std::vector<GLuint> ids(textures.begin(), textures.end());
+  auto got = runGlslKernel(isolatedExerciseSource("exercise.glsl", id), submittedShaderFile("exercise.glsl"), body,
+                           count, stride, inputs, ids);
+  const fs::path reference = fs::path(variant::kSolutionDir) / "shaders/exercise.glsl";
+  if (lastKernelMilliseconds() > kSlowShaderFloorMs && *variant::kSolutionDir && fs::exists(reference)) {
+    // Slow: both kernels again, each timed on its second run (a first dispatch may include the
+    // driver's compile), the submission's and the reference's on the same inputs.
+    const std::string mineText = isolatedExerciseSource("exercise.glsl", id), refText = readFile(reference);
+    auto timed = [&](const std::string& text, const fs::path& origin) {
+      runGlslKernel(text, origin, body, count, stride, inputs, ids);
+      runGlslKernel(text, origin, body, count, stride, inputs, ids);
+      return std::max(lastKernelMilliseconds(), 0.01);
+    };
+    const double mine = timed(mineText, submittedShaderFile("exercise.glsl")), ref = timed(refText, reference);
+    if (mine > kSlowShaderFloorMs && mine > kSlowShaderFactor * ref)
+      throw SlowShader("WRONG: your shader runs " + std::to_string(int(mine / ref)) + "x longer than the reference (" +
+                       std::to_string(int(mine)) + " ms against " + std::to_string(ref).substr(0, 5) + " ms on " +
+                       std::to_string(count) + " inputs): an endless loop? (a GPU would hang on it)");
+  }
+  return got;
 }
 
 // The seed of grading-time variations (WB_VARY_SEED, set by the grader), or -1: scenes are then

@@ -38,6 +38,14 @@ bool updatingGolden();
 std::vector<glm::vec4> runExercise(const std::string& id, const std::string& body, int count, int stride,
                                    const std::vector<glm::vec4>& inputs, const std::vector<unsigned>& textures = {});
 
+/// A GLSL exercise whose kernel runs far longer than the reference's on the same inputs (an endless
+/// loop, which llvmpipe cuts off after 65535 iterations and a GPU would hang on): WRONG.
+struct SlowShader : wb::Error {
+  using wb::Error::Error;
+};
+/// How much longer than the reference a kernel may run, and the time below which it never counts.
+constexpr double kSlowShaderFactor = 50.0, kSlowShaderFloorMs = 2.0;
+
 /// While it lives, this process's shaders (wb::Program, wb::shaderSearchPath) are exercise `id`'s
 /// isolated GLSL: the submission's chunk of `id` and the solution's other chunks, in every GLSL
 /// exercise file (exercise.glsl and stage files such as a .geom), written under the test outputs.
@@ -71,6 +79,8 @@ class IsolatedShaders {
 #define WB_RUN_GLSL(results, ...)                                         \
   try {                                                                   \
     results = ::wb::test::runExercise(__VA_ARGS__);                       \
+  } catch (const ::wb::test::SlowShader& e) {                             \
+    FAIL() << e.what();                                                   \
   } catch (const std::exception& e) {                                     \
     FAIL() << "ERROR: " << e.what();                                      \
   }                                                                       \

@@ -1,0 +1,210 @@
+"""The grading trees: the runner's student edition and the judge's solution build, prepared once
+and reused for every submission, and the copy of a runner's tape the judge reads."""
+import os
+import shutil
+import subprocess
+import time
+from pathlib import Path
+
+from .common import BUILDER_UID, MAX_TAPE_BYTES, ROOT, SANDBOX_UID
+from .submission import load_labs, student_files
+
+
+def instructor_paths():
+    """What the student edition leaves out (tools/instructor_paths.txt), relative to ROOT."""
+    lines = (ROOT / "tools/instructor_paths.txt").read_text().splitlines()
+    return [l.strip() for l in lines if l.strip() and not l.startswith("#")]
+
+
+def edition_ignore(root_dir):
+    """A copytree ignore: the instructor material, git, build folders and caches of the checkout."""
+    left_out = {ROOT / p for p in instructor_paths()}
+
+    def ignore(folder, names):
+        here = Path(folder)
+        return {n for n in names if here / n in left_out or n in (".git", "__pycache__", "node_modules")
+                or (here == root_dir and (n.startswith("build") or n == "grades"))}
+    return ignore
+
+
+def sync_tree(src, dest, ignore):
+    """Makes dest a copy of src (less what ignore leaves out), writing only the files whose content
+    differs, so an unchanged tree is not rebuilt."""
+    dest.mkdir(parents=True, exist_ok=True)
+    names = set(os.listdir(src)) - ignore(str(src), os.listdir(src))
+    for stale in set(os.listdir(dest)) - names:
+        p = dest / stale
+        shutil.rmtree(p) if p.is_dir() and not p.is_symlink() else p.unlink()
+    for n in names:
+        s, d = src / n, dest / n
+        if s.is_symlink() or not (s.is_dir() or s.is_file()):
+            continue
+        if s.is_dir():
+            sync_tree(s, d, ignore)
+            continue
+        st = s.stat()
+        if not d.is_file() or d.stat().st_size != st.st_size or d.read_bytes() != s.read_bytes():
+            shutil.copyfile(s, d)  # a new time: make rebuilds what depends on it
+        os.chmod(d, 0o644 | (st.st_mode & 0o111))
+
+
+class Workspace:
+    """One pair of prebuilt grading trees:
+    - the runner's, build-grade/wK: src/ is the student edition of this checkout (no solutions, no
+      held-out tests, no mutants, no grader) with one submission's exercise files in labs/, built in
+      build/ by the builder user (uid 61500 + k) into labNN and labNN_tests; the runner user
+      (uid 61000 + k) runs them and writes only its tapes and test-output/;
+    - the judge's, build-grade/judge/wK (root's alone): this checkout's solution build, labNN_solution
+      and labNN_solution_tests, which judge the tapes and draw every scene (docs/grading-trust.md)."""
+
+    def __init__(self, index, labs, base):
+        self.uid = SANDBOX_UID + index  # runs the student's code (when the grader is root)
+        self.heldout_uid = SANDBOX_UID + 100 + index  # and its held-out runs, apart from the visible ones
+        self.builder = BUILDER_UID + index  # compiles it
+        self.dir = base / f"w{index}"
+        self.src = self.dir / "src"
+        self.build = self.dir / "build"
+        self.judge = base / "judge" / f"w{index}"
+        self.stubs = self.dir / "stubs"  # the public stub shaders, for the runner's recording runs
+        self.labs = labs
+
+    def lab_dir(self, lab):
+        return self.src / "labs" / lab
+
+    def reset_to_stubs(self):
+        for lab in load_labs():  # every lab, so the build is configured the same whatever --labs says
+            for rel in student_files(lab):
+                self.place(lab["name"], rel, (ROOT / "labs" / lab["name"] / rel).read_bytes())
+
+    def place(self, lab, rel, content):
+        """Writes a file only when its content changes, so make rebuilds only what changed."""
+        target = self.lab_dir(lab) / rel
+        if target.exists() and target.read_bytes() == content:
+            return
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_bytes(content)
+
+    def after_killed_build(self, labs):
+        """A build killed mid-way may leave a half-written object or executable that is newer than its
+        sources, which make would take as up to date: the executables go and the exercise files are
+        touched, so the next build of these labs redoes both."""
+        for lab in labs:
+            for name in (f"lab{lab['nn']}", f"lab{lab['nn']}_tests"):
+                (self.build / name).unlink(missing_ok=True)
+            for rel in student_files(lab):
+                target = self.lab_dir(lab["name"]) / rel
+                if target.exists():
+                    target.touch()
+
+    def runner_targets(self, labs):
+        return [t for lab in labs for t in (f"lab{lab['nn']}", f"lab{lab['nn']}_tests")]
+
+    def prepare(self, jobs, sandbox):
+        """Builds the judge's tree (root) and the runner's (the builder user, stubs in place)."""
+        t0 = time.time()
+        for p in (self.dir.parent, self.dir):
+            p.mkdir(parents=True, exist_ok=True)
+            os.chmod(p, 0o755)
+        self.judge.mkdir(parents=True, exist_ok=True)
+        os.chmod(self.judge.parent, 0o700)
+        sync_tree(ROOT, self.src, edition_ignore(ROOT))
+        stub_shaders = {Path(f).name for lab in self.labs for f in student_files(lab) if f.startswith("shaders/")}
+        sync_tree(ROOT / "labs", self.stubs, lambda folder, names: {n for n in names if Path(folder, n).is_file()
+                                                                    and n not in stub_shaders})
+        self.reset_to_stubs()
+        # Configured every time (a few seconds when nothing changed): a lab added since the last run
+        # is otherwise an unknown target to the old Makefiles, which never get to regenerate.
+        run_checked(["cmake", "-S", str(ROOT), "-B", str(self.judge), "-DCMAKE_BUILD_TYPE=RelWithDebInfo"],
+                    "configure the judge's build")
+        targets = [t for lab in self.labs for t in (f"lab{lab['nn']}_solution", f"lab{lab['nn']}_solution_tests")]
+        run_checked(["cmake", "--build", str(self.judge), "-j", str(jobs), "--target"] + targets,
+                    "build the judge's build")
+        cache = (self.build / "CMakeCache.txt").read_text() if (self.build / "CMakeCache.txt").exists() else None
+        if cache is not None and (f"CMAKE_HOME_DIRECTORY:INTERNAL={self.src}\n" not in cache
+                                  or "WB_REGISTER_TESTS:BOOL=OFF" not in cache):
+            shutil.rmtree(self.build)  # a build of another source tree (an older grader's)
+        own(self.build, self.builder, 0o755)
+        env = dict(os.environ, HOME="/tmp")
+        sandbox.checked(["cmake", "-S", str(self.src), "-B", str(self.build), "-DCMAKE_BUILD_TYPE=RelWithDebInfo",
+                         "-DWB_REGISTER_TESTS=OFF"],  # (discovery would run the student's code in the build)
+                        self.builder, env, "configure the runner's build (as the builder user)", **self.builder_binds())
+        sandbox.checked(["cmake", "--build", str(self.build), "-j", str(jobs), "--target"] + self.runner_targets(self.labs),
+                        self.builder, env, "build the runner's build (as the builder user)", **self.builder_binds())
+        self.fresh_outputs()
+        return time.time() - t0
+
+    def uids(self):
+        """The sandbox users of this tree: its builder, runner and held-out runner."""
+        return {self.builder, self.uid, self.heldout_uid}
+
+    def builder_binds(self):
+        """What a build of the student's code sees in the sandbox: the student edition (read only) and
+        its build folder, less the runners' tapes and outputs."""
+        return {"ro": [self.src], "rw": [self.build], "cwd": self.build}
+
+    def runner_binds(self, tape, held_out):
+        """What a runner sees: the student edition, its build and the stub shaders, read only; its own
+        tape folder, writable; no other runner's tape, and a test-output/ of its own (empty, gone
+        when it ends) so nothing is written in common by a held-out run and a visible one."""
+        hide = [self.build / "tapes", self.build / "test-output"]
+        return {"ro": [self.src, self.build, self.stubs], "rw": [tape], "hide": hide}
+
+    def fresh_outputs(self):
+        """Empties the runners' folders, so nothing one submission's code left there meets the next:
+        test-output/ is the visible runner's; tapes/ is root's, enterable by both runners, each tape
+        in it its runner's alone."""
+        for name in ("test-output", "tapes"):
+            shutil.rmtree(self.build / name, ignore_errors=True)
+        own(self.build / "test-output", self.uid)
+        (self.build / "tapes").mkdir()
+        os.chmod(self.build / "tapes", 0o711)
+
+    def fresh_tape(self, tag, uid):
+        """An empty folder for one runner's tape, its user's (`uid`) alone."""
+        tape = self.build / "tapes" / tag
+        shutil.rmtree(tape, ignore_errors=True)
+        own(tape, uid)
+        return tape
+
+
+def own(folder, uid, mode=0o700):
+    """Creates `folder` (if needed) and gives it, and what is in it, to `uid` (when root), the folder
+    itself with `mode` (the user's alone by default)."""
+    folder.mkdir(parents=True, exist_ok=True)
+    if os.geteuid() != 0:
+        return
+    for p in [folder] + list(folder.rglob("*")):
+        try:
+            os.lchown(p, uid, uid)
+        except OSError:
+            pass
+    os.chmod(folder, mode)
+
+
+def copy_tape(src, dest):
+    """Copies a runner's tape for the judge: its regular files named as a tape's (no links, devices,
+    folders or other files), up to MAX_TAPE_BYTES in all; what does not fit is left out, so the judge
+    finds no result there."""
+    shutil.rmtree(dest.parent, ignore_errors=True)
+    dest.mkdir(parents=True)
+    os.chmod(dest.parent, 0o700)
+    total = 0
+    for entry in sorted(os.scandir(src), key=lambda e: e.name) if src.is_dir() else []:
+        if not entry.is_file(follow_symlinks=False) or not (entry.name == "tape.jsonl" or entry.name.startswith("file-")):
+            continue  # only the tape's own files (tests/harness/tape.cpp names them)
+        size = entry.stat(follow_symlinks=False).st_size
+        if total + size > MAX_TAPE_BYTES:
+            continue
+        total += size
+        try:
+            fd = os.open(entry.path, os.O_RDONLY | os.O_NOFOLLOW)
+        except OSError:
+            continue
+        with os.fdopen(fd, "rb") as f_in, open(dest / entry.name, "wb") as f_out:
+            f_out.write(f_in.read(size))
+
+
+def run_checked(cmd, what):
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    if r.returncode != 0:
+        raise SystemExit(f"grade: could not {what}:\n{r.stdout[-3000:]}{r.stderr[-3000:]}")
