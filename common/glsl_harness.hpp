@@ -76,7 +76,7 @@ std::vector<glm::vec4> runGlslKernel(const std::string& functions, const std::fi
                                      const std::string& body, int count, int stride,
                                      const std::vector<glm::vec4>& inputs, const std::vector<GLuint>& textures = {});
 
-/// The GPU time of the last runGlslKernel() dispatch, in milliseconds (a timer query around it):
+/// The time of the last runGlslKernel() dispatch, in milliseconds (to glFinish, on the clock):
 /// the judge holds a student's kernel against the reference's to catch endless loops, which
 /// llvmpipe cuts off after 65535 iterations instead of hanging.
 double lastKernelMilliseconds();

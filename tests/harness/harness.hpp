@@ -44,7 +44,7 @@ struct SlowShader : wb::Error {
   using wb::Error::Error;
 };
 /// How much longer than the reference a kernel may run, and the time below which it never counts.
-constexpr double kSlowShaderFactor = 50.0, kSlowShaderFloorMs = 2.0;
+constexpr double kSlowShaderFactor = 20.0, kSlowShaderFloorMs = 2.0;
 
 /// While it lives, this process's shaders (wb::Program, wb::shaderSearchPath) are exercise `id`'s
 /// isolated GLSL: the submission's chunk of `id` and the solution's other chunks, in every GLSL
