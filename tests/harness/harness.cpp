@@ -111,19 +111,26 @@ std::vector<glm::vec4> runExercise(const std::string& id, const std::string& bod
   const fs::path reference = fs::path(variant::kSolutionDir) / "shaders/exercise.glsl";
   if (*variant::kSolutionDir && fs::exists(reference)) {
     // Timed against the reference on the same inputs, repeated to 16384 invocations so that the
-    // dispatch's own cost does not hide a slow shader; each kernel's second run is timed (the
-    // first may include the driver's compile).
+    // dispatch's own cost does not hide a slow shader.
     const int reps = std::max(1, 16384 / std::max(count, 1));
     const size_t one = size_t(std::max(count, 1)) * size_t(stride);
     std::vector<glm::vec4> many(one * size_t(reps));
     for (size_t j = 0; j < many.size(); ++j) many[j] = j % one < inputs.size() ? inputs[j % one] : glm::vec4(0.0f);
+    const std::string mineText = isolatedExerciseSource("exercise.glsl", id), refText = readFile(reference);
+    const fs::path mineOrigin = submittedShaderFile("exercise.glsl");
     auto timed = [&](const std::string& text, const fs::path& origin) {
-      runGlslKernel(text, origin, body, count * reps, stride, many, ids);
       runGlslKernel(text, origin, body, count * reps, stride, many, ids);
       return std::max(lastKernelMilliseconds(), 0.01);
     };
-    const double mine = timed(isolatedExerciseSource("exercise.glsl", id), submittedShaderFile("exercise.glsl"));
-    const double ref = timed(readFile(reference), reference);
+    timed(mineText, mineOrigin);  // (a first run may include the driver's compile)
+    timed(refText, reference);
+    double mine = timed(mineText, mineOrigin), ref = timed(refText, reference);
+    // Slow once: three more rounds, interleaved, and the fastest of each, so that a process
+    // descheduled on a loaded machine is not taken for an endless loop.
+    for (int round = 0; round < 3 && mine > kSlowShaderFloorMs && mine > kSlowShaderFactor * ref; ++round) {
+      mine = std::min(mine, timed(mineText, mineOrigin));
+      ref = std::min(ref, timed(refText, reference));
+    }
     if (mine > kSlowShaderFloorMs && mine > kSlowShaderFactor * ref)
       throw SlowShader("WRONG: your shader runs " + std::to_string(int(mine / ref)) + "x longer than the reference (" +
                        std::to_string(int(mine)) + " ms against " + std::to_string(ref).substr(0, 5) + " ms on " +
