@@ -10,7 +10,9 @@ out=${1:?usage: run_synthetic_class.sh OUTPUT_DIR}
 rm -rf "$out" && mkdir -p "$out"
 # A second copy of the solutions elsewhere on the machine, readable by everyone (an instructor's
 # other clone): the sandbox must keep it out of reach (cpp_include_copy).
-copy=/opt/wb-second-copy-$$
+base=/opt
+[ -w "$base" ] || base=${TMPDIR:-/tmp}  # (not root: a folder of this user's, outside the checkout)
+copy=$base/wb-second-copy-$$
 trap 'rm -rf "$copy"' EXIT
 mkdir -p "$copy" && cp -r "$root/solutions" "$copy/" && chmod -R a+rX "$copy"
 /usr/bin/python3 "$root/tools/make_submissions.py" "$out/submissions" --labs 01,02 --second-copy "$copy"
