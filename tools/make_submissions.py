@@ -350,18 +350,32 @@ def main():
         path.write_text(text)
         expect("one_wrong", [meta["exercise"]])
 
+    # The faults and cheats below work on the lab of the exercises they break; the class's other labs
+    # stay the stubs (untouched: the grader neither builds nor runs them), which keeps the class quick.
+    # ("full" and "one_wrong" above and the archive below are whole.)
+    its_lab = cpp[0] if cpp else glsl[0] if glsl else None
+    others = {e["id"] for name, ex in the_labs if name not in (its_lab, glsl and glsl[0]) for e in ex}
+
+    def full_one(name):
+        write_tree(out / name, lambda lab: solution(lab) if lab in (its_lab, glsl and glsl[0]) else ROOT / "labs" / lab,
+                   the_labs)
+        return out / name
+
+    def expect_one(name, lost):
+        expect(name, sorted(set(lost) | others))
+
     if cpp:
         lab, e = cpp
-        d = full("compile_error")
+        d = full_one("compile_error")
         edit(d, lab, e["file"], e["id"], "  this is not C++;\n")
-        expect("compile_error", [e["id"]])
-        d = full("segfault")
+        expect_one("compile_error", [e["id"]])
+        d = full_one("segfault")
         edit(d, lab, e["file"], e["id"], "  *static_cast<volatile int*>(nullptr) = 1;  // crash\n")
-        expect("segfault", [e["id"]])
-        d = full("endless_loop_cpp")
+        expect_one("segfault", [e["id"]])
+        d = full_one("endless_loop_cpp")
         edit(d, lab, e["file"], e["id"], "  for (volatile bool forever = true; forever;) {\n  }\n")
-        expect("endless_loop_cpp", [e["id"]])
-        d = full("endless_build")
+        expect_one("endless_loop_cpp", [e["id"]])
+        d = full_one("endless_build")
         # Legal C++ that takes GCC a quarter of an hour or more to compile: 800 template
         # instantiations (under the default -ftemplate-depth of 900), each with a constant
         # expression of 1.5 million loop steps (under GCC 12's -fconstexpr-ops-limit of 2^25 for
@@ -386,10 +400,10 @@ struct CompileTimeSteps<0> {
 };
 static_assert(CompileTimeSteps<800>::value == 800, "800 steps");
 """)
-        expect("endless_build", [e["id"]])
+        expect_one("endless_build", [e["id"]])
     if glsl:
         lab, e = glsl
-        d = full("endless_loop_glsl")
+        d = full_one("endless_loop_glsl")
         # The loop reads and writes a parameter the function goes on to use, and whether it ends
         # depends on that value, so no compiler can drop it. In GLSL it never ends (the value steps
         # past 12345.678, then stalls at 2^24); on a GPU it hangs until the grader's time limit.
@@ -400,7 +414,7 @@ static_assert(CompileTimeSteps<800>::value == 800, "800 steps");
         kind, param = re.search(r"\w+\s*\(\s*(?:in\s+)?(\w+)\s+(\w+)", signature).groups()
         c = param if kind == "float" else f"{param}[0][0]" if kind.startswith("mat") else f"{param}.x"
         edit(d, lab, e["file"], e["id"], f"  while ({c} != 12345.678) {c} += 1.0;\n")
-        expect("endless_loop_glsl", [e["id"]])
+        expect_one("endless_loop_glsl", [e["id"]])
 
     # An upload as students make it: the whole folder zipped under a top folder, one file missing
     # (its stub is graded, so that file's exercises are lost).
@@ -416,12 +430,12 @@ static_assert(CompileTimeSteps<800>::value == 800, "800 steps");
     expect("archive", [e["id"] for e in first_ex if e["file"] == missing])
 
     if cpp and glsl:
-        red_team(out, full, expect, cpp, glsl, points, the_labs)
+        red_team(out, full_one, expect_one, cpp, glsl, points, the_labs)
 
         def stubs_of(name):
             write_tree(out / name, lambda lab: ROOT / "labs" / lab, the_labs)
             return out / name
-        redteam.sandbox_cheats(out, full, expect, cpp, glsl, the_labs, stubs_of, args.second_copy, ROOT)
+        redteam.sandbox_cheats(out, full_one, expect_one, cpp, glsl, the_labs, stubs_of, args.second_copy, ROOT)
 
     (out / "expected.json").write_text(json.dumps(expected, indent=2) + "\n")
     print(f"wrote {len(expected)} submissions to {out} (expected scores in expected.json)")

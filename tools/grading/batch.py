@@ -150,13 +150,16 @@ def main():
     ap.add_argument("--build-timeout", type=int, default=DEFAULT_BUILD_TIMEOUT,
                     help="seconds for one build of a submission's code; a build that runs longer is stopped and "
                          f"costs the exercises it was building (default {DEFAULT_BUILD_TIMEOUT})")
+    ap.add_argument("--judge-build", metavar="DIR",
+                    help="judge with this existing build of the checkout (./workbook build's build/) instead of "
+                         "building one in build-grade/judge: saves the framework's compile")
     ap.add_argument("--name", help="the student's name in the reports (default: the submission's name)")
     args = ap.parse_args()
     only = [x.strip().zfill(2) for x in args.labs.split(",")] if args.labs else None
     labs = load_labs(only)
     sandbox = Sandbox()
     if args.prepare_only:
-        secs = Workspace(0, labs, ROOT / "build-grade").prepare(os.cpu_count() or 2, sandbox)
+        secs = Workspace(0, labs, ROOT / "build-grade", args.judge_build).prepare(os.cpu_count() or 2, sandbox)
         log(f"grade: the grading build is ready ({secs:.0f} s)")
         return 0
     if not args.submission:
@@ -176,11 +179,12 @@ def main():
     workers = max(1, min(args.jobs, len(subs)))
     base = ROOT / "build-grade"
     if sandbox.drop:  # what the student's code must not read: everything of the instructor's but its trees
-        hide_from_sandbox([p for p in ROOT.iterdir() if p.name != "build-grade"] + [out] + ([src] if args.batch else []))
+        hide_from_sandbox([p for p in ROOT.iterdir() if p.name != "build-grade"] + [out] + ([src] if args.batch else [])
+                          + ([Path(args.judge_build)] if args.judge_build else []))
     log(f"grade: student code runs in {sandbox.protections()}")
     for n in sandbox.notes:
         log(f"grade: note: {n}")
-    spaces = [Workspace(k, labs, base) for k in range(workers)]
+    spaces = [Workspace(k, labs, base, args.judge_build) for k in range(workers)]
     for ws in spaces:
         log(f"grade: preparing the grading build {ws.dir} (the first time builds the framework) ...")
         secs = ws.prepare(max(1, (os.cpu_count() or 2)), sandbox)

@@ -123,13 +123,13 @@ class Grader:
             return {e["id"]: build_failure(out) for e in lab["exercises"]}
         return failed
 
-    def list_tests(self, lab):
+    def list_tests(self, lab, built=True):
         exe = self.ws.build / f"lab{lab['nn']}_tests"
-        if not exe.exists():  # the lab could not be built at all (every exercise is then marked broken)
+        if built and not exe.exists():  # the lab could not be built at all (every exercise is then marked broken)
             return []
         # The list comes from the judge (the same test sources, built with the solution): a submission
         # cannot hide a test by printing another list.
-        judge = self.ws.judge / f"lab{lab['nn']}_solution_tests"
+        judge = self.ws.judge_bin / f"lab{lab['nn']}_solution_tests"
         code, out, _ = run_killable([str(judge), "--gtest_list_tests"], 60, cwd=self.ws.judge)
         tests, suite = [], ""
         for line in out.splitlines():
@@ -148,7 +148,7 @@ class Grader:
         Held-out tests are in the judge only: a planning pass of the judge says which lab runs the
         runner must record (`held_out`)."""
         runner = self.ws.build / f"lab{lab['nn']}_tests"
-        judge = self.ws.judge / f"lab{lab['nn']}_solution_tests"
+        judge = self.ws.judge_bin / f"lab{lab['nn']}_solution_tests"
         uid = self.ws.heldout_uid if held_out else self.ws.uid  # (held-out inputs: not for a visible run)
         tape = self.ws.fresh_tape(tag, uid)
         judged = self.ws.judge / "runs" / tag
@@ -332,18 +332,20 @@ class Grader:
                 found_files[lab["name"]] = (files, notes)
                 for rel, content in files.items():
                     self.ws.place(lab["name"], rel, content)
-            all_built, _ = self.build(self.labs)  # one parallel build when every lab compiles
+            # Only the labs the submission touched are built and run (an untouched lab scores 0 unrun).
+            touched = [lab for lab in self.labs if not self.untouched(lab, found_files[lab["name"]][0])]
+            all_built = self.build(touched)[0] if touched else True  # one parallel build when all compile
             results.timing["build"] = time.time() - t_build
             t_tests = time.time()
             for lab in self.labs:
                 files, notes = found_files[lab["name"]]
+                if lab not in touched:
+                    self.add_untouched(results, lab, self.list_tests(lab, built=False), notes)
+                    continue
                 broken = {}
                 if not all_built:
                     broken = self.compile_lab(lab, files)
                 tests = self.list_tests(lab)
-                if self.untouched(lab, files):
-                    self.add_untouched(results, lab, tests, notes)
-                    continue
                 with concurrent.futures.ThreadPoolExecutor(self.test_jobs) as pool:  # one process each
                     outcome, failed_uses = {}, {}
                     pending = list(lab["exercises"])

@@ -57,14 +57,16 @@ class Workspace:
     - the judge's, build-grade/judge/wK (root's alone): this checkout's solution build, labNN_solution
       and labNN_solution_tests, which judge the tapes and draw every scene (docs/grading-trust.md)."""
 
-    def __init__(self, index, labs, base):
+    def __init__(self, index, labs, base, judge_build=None):
         self.uid = SANDBOX_UID + index  # runs the student's code (when the grader is root)
         self.heldout_uid = SANDBOX_UID + 100 + index  # and its held-out runs, apart from the visible ones
         self.builder = BUILDER_UID + index  # compiles it
         self.dir = base / f"w{index}"
         self.src = self.dir / "src"
         self.build = self.dir / "build"
-        self.judge = base / "judge" / f"w{index}"
+        self.judge = base / "judge" / f"w{index}"  # the judge's runs (root's alone)
+        # The judge's binaries: its own build, or an existing solution build of this checkout (--judge-build)
+        self.judge_bin = Path(judge_build).resolve() if judge_build else self.judge
         self.stubs = self.dir / "stubs"  # the public stub shaders, for the runner's recording runs
         self.labs = labs
 
@@ -112,13 +114,7 @@ class Workspace:
         sync_tree(ROOT / "labs", self.stubs, lambda folder, names: {n for n in names if Path(folder, n).is_file()
                                                                     and n not in stub_shaders})
         self.reset_to_stubs()
-        # Configured every time (a few seconds when nothing changed): a lab added since the last run
-        # is otherwise an unknown target to the old Makefiles, which never get to regenerate.
-        run_checked(["cmake", "-S", str(ROOT), "-B", str(self.judge), "-DCMAKE_BUILD_TYPE=RelWithDebInfo"],
-                    "configure the judge's build")
-        targets = [t for lab in self.labs for t in (f"lab{lab['nn']}_solution", f"lab{lab['nn']}_solution_tests")]
-        run_checked(["cmake", "--build", str(self.judge), "-j", str(jobs), "--target"] + targets,
-                    "build the judge's build")
+        self.prepare_judge(jobs)
         cache = (self.build / "CMakeCache.txt").read_text() if (self.build / "CMakeCache.txt").exists() else None
         if cache is not None and (f"CMAKE_HOME_DIRECTORY:INTERNAL={self.src}\n" not in cache
                                   or "WB_REGISTER_TESTS:BOOL=OFF" not in cache):
@@ -132,6 +128,22 @@ class Workspace:
                         self.builder, env, "build the runner's build (as the builder user)", **self.builder_binds())
         self.fresh_outputs()
         return time.time() - t0
+
+    def prepare_judge(self, jobs):
+        """Builds (or brings up to date) the judge's solution build: its own, or the instructor's
+        existing build of this same checkout (--judge-build), which must be one."""
+        if self.judge_bin != self.judge:
+            cache = self.judge_bin / "CMakeCache.txt"
+            if not cache.is_file() or f"CMAKE_HOME_DIRECTORY:INTERNAL={ROOT}\n" not in cache.read_text():
+                raise SystemExit(f"grade: --judge-build {self.judge_bin} is not a build of {ROOT} (no CMakeCache.txt "
+                                 "naming it): give the folder of ./workbook build (build/) or leave the option out")
+        else:  # configured every time (a few seconds when nothing changed): a lab added since the last
+            # run is otherwise an unknown target to the old Makefiles, which never get to regenerate
+            run_checked(["cmake", "-S", str(ROOT), "-B", str(self.judge), "-DCMAKE_BUILD_TYPE=RelWithDebInfo"],
+                        "configure the judge's build")
+        targets = [t for lab in self.labs for t in (f"lab{lab['nn']}_solution", f"lab{lab['nn']}_solution_tests")]
+        run_checked(["cmake", "--build", str(self.judge_bin), "-j", str(jobs), "--target"] + targets,
+                    "build the judge's build")
 
     def uids(self):
         """The sandbox users of this tree: its builder, runner and held-out runner."""
