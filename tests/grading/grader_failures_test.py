@@ -58,6 +58,9 @@ class BrokenBuild(grade.Grader):
     def build(self, labs):
         raise RuntimeError("boom in build")
 
+    def untouched(self, lab, files):  # (a lab left as the stubs is not built: this one is built)
+        return False
+
 
 class BrokenSecondLab(grade.Grader):
     """Every build works and every exercise passes, but listing the second lab's tests raises."""
