@@ -355,12 +355,11 @@ def main():
     # The faults and cheats below work on the lab of the exercises they break; the class's other labs
     # stay the stubs (untouched: the grader neither builds nor runs them), which keeps the class quick.
     # ("full" and "one_wrong" above and the archive below are whole.)
-    its_lab = cpp[0] if cpp else glsl[0] if glsl else None
-    others = {e["id"] for name, ex in the_labs if name not in (its_lab, glsl and glsl[0]) for e in ex}
+    broken_labs = {lab for lab, _ in (cpp, glsl) if lab}  # (cpp, glsl: (lab, exercise) or None)
+    others = {e["id"] for name, ex in the_labs if name not in broken_labs for e in ex}
 
     def full_one(name):
-        write_tree(out / name, lambda lab: solution(lab) if lab in (its_lab, glsl and glsl[0]) else ROOT / "labs" / lab,
-                   the_labs)
+        write_tree(out / name, lambda lab: solution(lab) if lab in broken_labs else ROOT / "labs" / lab, the_labs)
         return out / name
 
     def expect_one(name, lost):
