@@ -110,6 +110,8 @@ class Showcase : public wb::Lab {
   void techniquesWindow() {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(8, display.y - 8), ImGuiCond_FirstUseEver, ImVec2(0, 1));
+    // One line until opened, like the Settings window: opened, it covers the lower left of the scene.
+    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
     ImGui::Begin("Techniques (frame ms while shown)", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
     for (size_t k = 0; k < kTechniques.size(); ++k) {
       const std::string row = std::string(kTechniques[k].name) + "  (lab " + std::string(kTechniques[k].lab, 2) + ")";
