@@ -10,8 +10,9 @@
   endless_loop_cpp     full, with a loop that never ends in one C++ exercise
   endless_loop_glsl    full, with a loop that never ends in one GLSL exercise
   endless_build        full, with legal C++ in one exercise that takes GCC a quarter of an hour to
-                       compile: its build runs into the grader's --build-timeout (three times: the
-                       build of every lab, of its lab, of that exercise alone) and loses that exercise
+                       compile: its build runs into the grader's --build-timeout (the build of every
+                       lab it touched, of its lab when it touched others too, of that exercise alone)
+                       and loses that exercise
   archive.zip          full, zipped inside a top folder (as students upload it), missing one file
 
 The red team (cheats score zero; honest oddities score full marks):
@@ -441,7 +442,7 @@ static_assert(CompileTimeSteps<800>::value == 800, "800 steps");
     (out / "expected.json").write_text(json.dumps(expected, indent=2) + "\n")
     print(f"wrote {len(expected)} submissions to {out} (expected scores in expected.json)")
     if "endless_build" in expected:
-        print("endless_build runs into the grader's build time limit three times: grade it with a low one, "
+        print("endless_build runs into the grader's build time limit two or three times: grade it with a low one, "
               "e.g. ./workbook grade --batch DIR --build-timeout 20")
 
 

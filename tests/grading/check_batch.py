@@ -96,6 +96,9 @@ own = ("/tapes/", "/test-output/")  # the runner's own folders (emptied for the 
 intruded = [str(p) for base in (grades, subs, root) for p in base.rglob("WB_INTRUDER")
             if not ("build-grade/w" in str(p) and any(o in str(p) for o in own))]
 check(not intruded, f"a runner wrote into folders not its own: {intruded[:5]}")
+# No program built from a submission is left to run outside the sandbox by mistake.
+programs = [str(p) for p in (root / "build-grade").glob("w*/build/lab[0-9][0-9]*") if p.is_file()]
+check(not programs, f"programs built from a submission are left after the batch: {programs[:4]}")
 # Nor is anything of theirs left in the shared temporary folders (a .drirc for the judge, a note for
 # the next student): the grader sweeps them after each submission.
 def sandbox_files(top):

@@ -215,7 +215,11 @@ def main():
               f"({r['seconds']:.0f} s)" + " " * 20, end="" if args.batch else "\n", file=sys.stderr, flush=True)
 
     t0 = time.time()
-    results = grade_all(subs, spaces, grade_one, fail_one, progress)
+    try:
+        results = grade_all(subs, spaces, grade_one, fail_one, progress)
+    finally:
+        for ws in spaces:
+            ws.remove_student_programs()
     failed = [r["name"] for r in results if any(p.startswith("the grader failed") for p in r.get("problems", []))]
     if args.batch:
         log("")

@@ -52,7 +52,11 @@ class Grader:
     def __init__(self, ws, labs, sandbox, timeout, jobs, build_timeout=DEFAULT_BUILD_TIMEOUT):
         self.ws, self.labs, self.sandbox, self.timeout = ws, labs, sandbox, timeout
         self.build_timeout = build_timeout  # seconds for one build of the submission's code
-        self.build_jobs = self.test_jobs = max(1, jobs)  # cores for this submission
+        self.build_jobs = max(1, jobs)  # cores for this submission
+        # Exercises graded at once: twice the cores, since a runner or a judge is a short process that
+        # waits for its start-up and files for a good part of its time (on 2 cores, 6 submissions of
+        # labs 01 and 02 took 31 s with 4 at once, against 34-36 s with 2).
+        self.test_jobs = 2 * self.build_jobs
         self.build_timeouts = 0  # how many builds of this submission were stopped
         # A fresh variation of every scene per submission, unless the instructor fixes one to reproduce a grade.
         self.vary_seed = int(os.environ.get("WB_GRADE_SEED") or secrets.randbelow(1 << 32))
@@ -72,9 +76,8 @@ class Grader:
         # The builder user compiles, in the sandbox: no network, no view of the solutions.
         t0 = time.time()
         code, out, timed_out = self.sandbox.run(
-            ["cmake", "--build", str(self.ws.build), "-j", str(self.build_jobs), "--target"]
-            + self.ws.runner_targets(labs), self.build_timeout, env=dict(os.environ, HOME="/tmp"), uid=self.ws.builder,
-            **self.ws.builder_binds())
+            self.ws.build_command(self.build_jobs, labs), self.build_timeout, env=dict(os.environ, HOME="/tmp"),
+            uid=self.ws.builder, **self.ws.builder_binds())
         self.count("compile", t0)
         if timed_out:
             self.build_timeouts += 1
@@ -86,12 +89,13 @@ class Grader:
     def build_lab(self, lab):
         return self.build([lab])
 
-    def compile_lab(self, lab, files):
+    def compile_lab(self, lab, files, failed_build=None):
         """Builds the lab from the student's files. When exercise.cpp does not compile (or its build
         runs past the time limit), each C++ exercise is tried alone in the stub's file, so an error
         costs only the exercises it is in. Returns {exercise id: compiler message} for the exercises
-        that cannot be graded. The student's `files` are already in place."""
-        ok, out = self.build_lab(lab)
+        that cannot be graded. The student's `files` are already in place. `failed_build`: the output
+        of a failed build of this lab alone with these files, which need not run again."""
+        ok, out = (False, failed_build) if failed_build is not None else self.build_lab(lab)
         if ok:
             return {}
         cpp_ids = [e["id"] for e in lab["exercises"] if e["file"] == "exercise.cpp"]
@@ -334,7 +338,7 @@ class Grader:
                     self.ws.place(lab["name"], rel, content)
             # Only the labs the submission touched are built and run (an untouched lab scores 0 unrun).
             touched = [lab for lab in self.labs if not self.untouched(lab, found_files[lab["name"]][0])]
-            all_built = self.build(touched)[0] if touched else True  # one parallel build when all compile
+            all_built, first_out = self.build(touched) if touched else (True, "")  # one build when all compile
             results.timing["build"] = time.time() - t_build
             t_tests = time.time()
             for lab in self.labs:
@@ -343,8 +347,8 @@ class Grader:
                     self.add_untouched(results, lab, self.list_tests(lab, built=False), notes)
                     continue
                 broken = {}
-                if not all_built:
-                    broken = self.compile_lab(lab, files)
+                if not all_built:  # (the first build was of this lab alone: it need not run twice)
+                    broken = self.compile_lab(lab, files, first_out if touched == [lab] else None)
                 tests = self.list_tests(lab)
                 with concurrent.futures.ThreadPoolExecutor(self.test_jobs) as pool:  # one process each
                     outcome, failed_uses = {}, {}
@@ -362,8 +366,11 @@ class Grader:
                 # Each is then graded again in the stub's file with only its own chunk.
                 cpp_ids = [e["id"] for e in lab["exercises"] if e["file"] == "exercise.cpp"]
                 failing = [i for i in cpp_ids if i in broken or not outcome[i][0]]
+                stub_cpp = (ROOT / "labs" / lab["name"] / "exercise.cpp").read_text() if cpp_ids else ""
+                mine_cpp = files.get("exercise.cpp", b"").decode(errors="replace")
                 failed = [e for e in lab["exercises"] if e["id"] in failing and e["id"] not in broken
-                          and runs_app(outcome[e["id"]])]
+                          and runs_app(outcome[e["id"]]) and not hung_by_itself(outcome[e["id"]])
+                          and not left_as_stub(outcome[e["id"]], mine_cpp, stub_cpp, e["id"])]
                 if failed and len(failing) >= 2 and "exercise.cpp" in files:
                     for e in failed:
                         alone = self.grade_alone(lab, e, files["exercise.cpp"].decode(errors="replace"), tests,
@@ -390,6 +397,26 @@ def runs_app(outcome):
     _, failures, _, hidden_result, _ = outcome
     every = failures + (hidden_result[1] if hidden_result else [])
     return any("Scene" in test or "Measured" in test for test, _ in every)
+
+
+def hung_by_itself(outcome):
+    """Whether the exercise's own tests ran out of time in a test that calls only its function (not
+    the app, where the student's other exercises run too): graded alone, the same call would hang the
+    same way, and cost another time limit."""
+    _, failures, _, _, _ = outcome
+    return any("timed out after" in msg and test and "Scene" not in test and "Measured" not in test
+               for test, msg in failures[:1])
+
+
+def left_as_stub(outcome, mine, stub, ex_id):
+    """Whether exercise `ex_id` failed only as not implemented with its chunk of exercise.cpp byte for
+    byte the stub's: graded alone it would be the stub again, and say the same."""
+    _, failures, _, hidden_result, _ = outcome
+    every = failures + (hidden_result[1] if hidden_result else [])
+    if not every or not all("NOT IMPLEMENTED" in msg for _, msg in every):
+        return False
+    at, at_stub = chunk(mine, ex_id), chunk(stub, ex_id)
+    return at is not None and at_stub is not None and mine[at[0]:at[1]] == stub[at_stub[0]:at_stub[1]]
 
 
 def copy_images(failures, images, tag):

@@ -1,6 +1,7 @@
 """The grading trees: the runner's student edition and the judge's solution build, prepared once
 and reused for every submission, and the copy of a runner's tape the judge reads."""
 import os
+import re
 import shutil
 import subprocess
 import time
@@ -8,6 +9,11 @@ from pathlib import Path
 
 from .common import BUILDER_UID, MAX_TAPE_BYTES, ROOT, SANDBOX_UID
 from .submission import load_labs, student_files
+
+
+# The framework's static libraries and the tests' main in a build folder (cmake/Framework.cmake).
+FRAMEWORK_LIBRARIES = ("libglad.a", "common/libwb_common.a", "tests/harness/libwb_testing.a",
+                       "tests/harness/CMakeFiles/wb_testing_main.dir/main.cpp.o")
 
 
 def instructor_paths():
@@ -68,6 +74,7 @@ class Workspace:
         # The judge's binaries: its own build, or an existing solution build of this checkout (--judge-build)
         self.judge_bin = Path(judge_build).resolve() if judge_build else self.judge
         self.stubs = self.dir / "stubs"  # the public stub shaders, for the runner's recording runs
+        self.framework = self.dir / "framework"  # the judge build's framework libraries, which the runner links
         self.labs = labs
 
     def lab_dir(self, lab):
@@ -98,8 +105,27 @@ class Workspace:
                 if target.exists():
                     target.touch()
 
+    def remove_student_programs(self):
+        """After a batch: the last submission's programs go, so that nobody runs one outside the
+        sandbox by mistake (an instructor who tries a binary in build-grade/ would run that student's
+        code as themselves, with all their rights). The next build links them again."""
+        for lab in load_labs():
+            for name in (f"lab{lab['nn']}", f"lab{lab['nn']}_tests"):
+                (self.build / name).unlink(missing_ok=True)
+
     def runner_targets(self, labs):
         return [t for lab in labs for t in (f"lab{lab['nn']}", f"lab{lab['nn']}_tests")]
+
+    def build_command(self, jobs, labs):
+        """The build of a submission's `labs` in the prepared tree. Only exercise files change between
+        submissions, never a CMake input, so one make goes straight to the targets' `all` rules in
+        CMakeFiles/Makefile2, without CMake's check of the configuration (its globs and generators: about
+        a second for every build). (Not the targets' names there: each runs a make of its own, and two
+        of them at once would compile the shared exercise object at the same time.)"""
+        if (self.build / "CMakeFiles" / "Makefile2").is_file():
+            return ["make", "-f", "CMakeFiles/Makefile2", "-j", str(jobs)] + \
+                [f"CMakeFiles/{t}.dir/all" for t in self.runner_targets(labs)]
+        return ["cmake", "--build", str(self.build), "-j", str(jobs), "--target"] + self.runner_targets(labs)
 
     def prepare(self, jobs, sandbox):
         """Builds the judge's tree (root) and the runner's (the builder user, stubs in place)."""
@@ -115,19 +141,37 @@ class Workspace:
                                                                     and n not in stub_shaders})
         self.reset_to_stubs()
         self.prepare_judge(jobs)
+        flags = self.take_framework()
         cache = (self.build / "CMakeCache.txt").read_text() if (self.build / "CMakeCache.txt").exists() else None
         if cache is not None and (f"CMAKE_HOME_DIRECTORY:INTERNAL={self.src}\n" not in cache
                                   or "WB_REGISTER_TESTS:BOOL=OFF" not in cache):
             shutil.rmtree(self.build)  # a build of another source tree (an older grader's)
         own(self.build, self.builder, 0o755)
         env = dict(os.environ, HOME="/tmp")
-        sandbox.checked(["cmake", "-S", str(self.src), "-B", str(self.build), "-DCMAKE_BUILD_TYPE=RelWithDebInfo",
-                         "-DWB_REGISTER_TESTS=OFF"],  # (discovery would run the student's code in the build)
+        sandbox.checked(["cmake", "-S", str(self.src), "-B", str(self.build), *flags, "-DWB_REGISTER_TESTS=OFF",
+                         f"-DWB_PREBUILT_FRAMEWORK={self.framework}"],  # (discovery would run the student's code)
                         self.builder, env, "configure the runner's build (as the builder user)", **self.builder_binds())
         sandbox.checked(["cmake", "--build", str(self.build), "-j", str(jobs), "--target"] + self.runner_targets(self.labs),
                         self.builder, env, "build the runner's build (as the builder user)", **self.builder_binds())
         self.fresh_outputs()
         return time.time() - t0
+
+    def take_framework(self):
+        """Copies the framework's static libraries from the judge's build (the same source, which the
+        student edition shares) for the runner's build to link, so that it compiles only the labs; returns
+        the judge's build type and flags, which the runner's build takes too. The libraries hold no
+        solution (cmake/Framework.cmake)."""
+        cache = (self.judge_bin / "CMakeCache.txt").read_text()
+        flags = [f"-D{key}={value}" for key, value in re.findall(r"^(CMAKE_BUILD_TYPE|CMAKE_C_FLAGS|CMAKE_CXX_FLAGS):"
+                                                                  r"[A-Z]+=(.*)$", cache, re.M)]
+        self.framework.mkdir(parents=True, exist_ok=True)
+        os.chmod(self.framework, 0o755)
+        for rel in FRAMEWORK_LIBRARIES:
+            src, dest = self.judge_bin / rel, self.framework / Path(rel).name
+            if not dest.is_file() or dest.read_bytes() != src.read_bytes():
+                shutil.copyfile(src, dest)  # (a new time only when it changed: make relinks the labs)
+            os.chmod(dest, 0o644)
+        return flags
 
     def prepare_judge(self, jobs):
         """Builds (or brings up to date) the judge's solution build: its own, or the instructor's
@@ -152,7 +196,7 @@ class Workspace:
     def builder_binds(self):
         """What a build of the student's code sees in the sandbox: the student edition (read only) and
         its build folder, less the runners' tapes and outputs."""
-        return {"ro": [self.src], "rw": [self.build], "cwd": self.build}
+        return {"ro": [self.src, self.framework], "rw": [self.build], "cwd": self.build}
 
     def runner_binds(self, tape, held_out):
         """What a runner sees: the student edition, its build and the stub shaders, read only; its own

@@ -1,0 +1,45 @@
+# The framework's static libraries (glad, wb_common, wb_testing) and the tests' main (an object, so
+# that its tests are always linked in): compiled here, or linked from a folder where another build of
+# this same source left them (WB_PREBUILT_FRAMEWORK). The grader's runner tree
+# (tools/grading/workspace.py) takes them from the judge's build, so that preparing it compiles only
+# the labs, not the framework a second time. They hold no solution: the labs' exercise files, tests
+# and held-out tests are compiled in the lab targets, never in these.
+set(WB_PREBUILT_FRAMEWORK "" CACHE PATH "A folder with libglad.a, libwb_common.a, libwb_testing.a and main.cpp.o built from this source")
+if(WB_PREBUILT_FRAMEWORK)
+  set(WB_FRAMEWORK_SCOPE INTERFACE)  # (an imported library has only usage requirements)
+else()
+  set(WB_FRAMEWORK_SCOPE PUBLIC)
+endif()
+
+function(wb_framework_library name)
+  if(NOT WB_PREBUILT_FRAMEWORK)
+    add_library(${name} STATIC ${ARGN})
+    return()
+  endif()
+  set(file ${WB_PREBUILT_FRAMEWORK}/lib${name}.a)
+  if(NOT EXISTS ${file})
+    message(FATAL_ERROR "WB_PREBUILT_FRAMEWORK: ${file} is missing; build the framework there, or leave the option empty")
+  endif()
+  add_library(${name} STATIC IMPORTED GLOBAL)
+  set_target_properties(${name} PROPERTIES IMPORTED_LOCATION ${file})
+endfunction()
+
+function(wb_framework_objects name source)
+  if(NOT WB_PREBUILT_FRAMEWORK)
+    add_library(${name} OBJECT ${source})
+    return()
+  endif()
+  get_filename_component(object ${source} NAME)
+  set(file ${WB_PREBUILT_FRAMEWORK}/${object}.o)
+  if(NOT EXISTS ${file})
+    message(FATAL_ERROR "WB_PREBUILT_FRAMEWORK: ${file} is missing; build the framework there, or leave the option empty")
+  endif()
+  add_library(${name} OBJECT IMPORTED GLOBAL)
+  set_target_properties(${name} PROPERTIES IMPORTED_OBJECTS ${file})
+endfunction()
+
+function(wb_framework_warnings name)
+  if(NOT WB_PREBUILT_FRAMEWORK)
+    target_compile_options(${name} PRIVATE ${WB_WARNINGS})
+  endif()
+endfunction()
