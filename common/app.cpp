@@ -1,6 +1,7 @@
 #include "common/app.hpp"
 
 #include "common/context.hpp"
+#include "common/crash_report.hpp"
 #include "common/image.hpp"
 #include "common/lab.hpp"
 #include "common/variant.hpp"
@@ -61,6 +62,7 @@ void App::loadScene(Lab& lab, const Options& o) {
 }
 
 int App::runLab(int argc, char** argv, std::unique_ptr<Lab> lab) {
+  installCrashReport();  // a crash in an exercise names its file:line
   const std::string exe = fs::path(argv[0]).filename().string();
   RunRecord record;
   record.set("lab", lab->board().number());

@@ -1,6 +1,7 @@
 // The framework's promises to students and lecturers: bad input gets a clear message and the right
 // exit code, never a crash; compiler errors name the original file and line; a broken shader edit
 // keeps the last good program.
+#include "common/crash_report.hpp"
 #include "common/ground_truth.hpp"
 #include "common/prefilter.hpp"
 #include "common/run_record.hpp"
@@ -456,4 +457,15 @@ TEST(Grading, TestsThatRunTheAppSaySceneOrMeasured) {
     }
   }
   EXPECT_GT(checked, 10);
+}
+
+// A crash names its signal and its file:line (what check and the grader show a student).
+static void crashHere() {
+  wb::installCrashReport();
+  volatile int* nowhere = nullptr;
+  *nowhere = 1;
+}
+
+TEST(CrashReport, NamesTheSignalAndTheLine) {
+  EXPECT_DEATH(crashHere(), "crashed \\(SIGSEGV: a bad memory access.*framework_test.cpp:[0-9]+");
 }

@@ -156,7 +156,10 @@ static std::vector<std::string> varyArgs() {
 // where the tests were started.
 static std::pair<int, std::string> runApp(const fs::path& out, const std::string& env, const std::string& exe,
                                           const std::vector<std::string>& args, const fs::path& log) {
-  std::string cmd = "cd " + quote(out.string()) + " && " + env + "timeout 120 " + quote(exe) + " --headless";
+  const char* limit = std::getenv("WB_RUN_TIMEOUT");  // seconds for one lab run (check sets it; else 120)
+  const int seconds = limit && std::atoi(limit) > 0 ? std::atoi(limit) : 120;
+  std::string cmd = "cd " + quote(out.string()) + " && " + env + "timeout " + std::to_string(seconds) + " " +
+                    quote(exe) + " --headless";
   for (const auto& a : args) cmd += " " + quote(a);
   for (const auto& a : varyArgs()) cmd += " " + quote(a);
   const int status = std::system((cmd + " >" + quote(log.string()) + " 2>&1").c_str());
@@ -358,10 +361,24 @@ static ::testing::AssertionResult runIsolated(const std::string& id, const fs::p
     std::istringstream lines(logText);
     for (std::string l; std::getline(lines, l);) {
       if (!l.empty()) last = l;
-      if (cause.empty() && l.find(": error") != std::string::npos) cause = l;
+      if (cause.empty() &&
+          (l.find(": error") != std::string::npos || l.rfind("crashed (", 0) == 0 || l.rfind("timed out (", 0) == 0))
+        cause = l;
+    }
+    // A crash in another exercise's code (common/crash_report.cpp names it) blocks this one: it could
+    // not be drawn, and says nothing about this exercise.
+    const auto other = cause.find(" in exercise ");
+    if ((code > 128 || code == 124) && other != std::string::npos &&
+        cause.compare(other + 13, id.size() + 1, id + ",") != 0) {
+      const std::string by = cause.substr(other + 13, cause.find(',', other) - other - 13);
+      return ::testing::AssertionFailure()
+             << "ERROR: blocked by " << by << ": the lab " << (code == 124 ? "ran out of time" : "crashed")
+             << " in exercise " << by << " before it could draw this one; fix " << by << " first. " << cause;
     }
     return ::testing::AssertionFailure() << "ERROR: the lab "
-                                         << (code == 124 ? "timed out" : "failed (exit " + std::to_string(code) + ")")
+                                         << (code == 124  ? "timed out"
+                                             : code > 128 ? "crashed"
+                                                          : "failed (exit " + std::to_string(code) + ")")
                                          << ": " << (cause.empty() ? last : cause) << "\n"
                                          << logText << "command: " << run.value("command", std::string());
   }

@@ -71,6 +71,8 @@ class IsolatedShaders {
     statement;                                           \
   } catch (const wb::NotImplemented& e) {                \
     FAIL() << e.what();                                  \
+  } catch (const wb::test::RunnerStopped& e) {           \
+    FAIL() << "ERROR: " << e.what();                     \
   } catch (const std::exception& e) {                    \
     FAIL() << "ERROR: the exercise threw: " << e.what(); \
   }

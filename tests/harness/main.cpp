@@ -12,6 +12,7 @@
 //   --judge DIR      replay the tape in DIR instead of running any exercise, and decide
 //                    (see tape.hpp: the grader runs the student's build as the runner and the
 //                    solution's as the judge; `./workbook check` runs both the same way)
+#include "common/crash_report.hpp"
 #include "common/glsl_harness.hpp"
 #include "common/variant.hpp"
 #include "tests/harness/diagnosis.hpp"
@@ -163,6 +164,7 @@ TEST(Manifest, EveryExerciseHasItsMarker) {
 }
 
 int main(int argc, char** argv) {
+  wb::installCrashReport();  // a crash in an exercise names its file:line
   ::testing::InitGoogleTest(&argc, argv);
   bool check = false, expectStubs = false;
   std::string requests, signatures;

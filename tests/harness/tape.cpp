@@ -21,8 +21,9 @@ namespace {
 
 TapeMode g_mode = TapeMode::Direct;
 fs::path g_dir;
-std::map<std::string, json> g_entries;  // replay: what the runner recorded
-std::map<std::string, int> g_counters;  // observations so far per test
+std::map<std::string, json> g_entries;       // replay: what the runner recorded
+std::map<std::string, std::string> g_stops;  // replay: why the runner of an exercise stopped (check)
+std::map<std::string, int> g_counters;       // observations so far per test
 std::mutex g_mutex;
 constexpr size_t kMaxMessage = 2000;  // a recorded exception's text is the student's: keep it short
 
@@ -44,6 +45,11 @@ void openTape(TapeMode mode, const fs::path& dir) {
     std::ofstream(dir / "tape.jsonl", std::ios::trunc);
   }
   if (mode != TapeMode::Replay) return;
+  // Why a runner stopped early, by exercise ("Ex09_2<tab>reason"): written by ./workbook check, which
+  // runs each exercise's runner alone with a time limit (the grader keeps its own account of that).
+  std::ifstream stops(dir / "stopped.txt");
+  for (std::string line; std::getline(stops, line);)
+    if (const auto tab = line.find('\t'); tab != std::string::npos) g_stops[line.substr(0, tab)] = line.substr(tab + 1);
   std::ifstream in(dir / "tape.jsonl");  // a missing or damaged tape replays as "nothing recorded"
   for (std::string line; std::getline(in, line);) {
     try {
@@ -64,8 +70,11 @@ std::string nextObservationKey() {
 json observeJson(const std::string& key, const std::function<json()>& produce) {
   if (g_mode == TapeMode::Replay) {
     const auto it = g_entries.find(key);
-    if (it == g_entries.end())
+    if (it == g_entries.end()) {
+      for (const auto& [tag, reason] : g_stops)
+        if (key.find("." + tag + "_") != std::string::npos) throw RunnerStopped(reason);
       throw Error("the student's build recorded no result here (it crashed, timed out or stopped before it)");
+    }
     const json& e = it->second;
     // Judging held-out tests, the runner's own words are never quoted: they could carry the inputs.
     const bool quiet = heldOutJudging();

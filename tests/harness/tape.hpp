@@ -22,6 +22,12 @@
 
 namespace wb::test {
 
+/// The runner of an exercise stopped before this call (check ran it alone with a time limit): its
+/// crash or time-out, in the student's words.
+struct RunnerStopped : Error {
+  using Error::Error;
+};
+
 /// How observations behave in this process.
 enum class TapeMode {
   Direct,  ///< run the code (ordinary tests)

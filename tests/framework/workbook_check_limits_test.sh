@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# ./workbook check runs each exercise's runner alone, in a session of its own, with a time limit
+# (run_exercise_runner): a runner that loops forever is stopped at the limit with every process it
+# started, and one that crashes is named with its signal; both reasons reach the judge
+# (stopped.txt), and the other exercises' records are kept. A fake lab stands in for the build:
+# 77.1 records, 77.2 loops (with a child that would outlive it), 77.3 crashes.
+# Usage: workbook_check_limits_test.sh SCRATCH_DIR
+set -uo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+tmp=${1:?usage: workbook_check_limits_test.sh SCRATCH_DIR}
+rm -rf "$tmp" && mkdir -p "$tmp/build"
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# shellcheck source=/dev/null
+source "$root/workbook"  # (the functions only)
+cd "$tmp" || exit 1
+cat >build/lab77_tests <<'FAKE'
+#!/usr/bin/env bash
+dir=$2 filter=$3
+mkdir -p "$dir"
+case $filter in
+  *Ex77_1_*) echo '{"key":"Lab77.Ex77_1_A#0","value":1}' >"$dir/tape.jsonl" ;;
+  *Ex77_2_*) sleep 1000 & echo $! >"$dir/../child.pid"; while :; do :; done ;;
+  *Ex77_3_*) echo "crashed (SIGSEGV: test) in exercise 77.3, at labs/77_fake/exercise.cpp:9 (f)" >&2; kill -SEGV $$ ;;
+esac
+FAKE
+chmod +x build/lab77_tests
+tape=$tmp/tape
+mkdir -p "$tape/all"
+start=$(date +%s)
+for id in 77.1 77.2 77.3; do run_exercise_runner 77 "$id" "$tape" 3 2>/dev/null; done
+took=$(($(date +%s) - start))
+[ "$took" -le 10 ] || fail "three runners with a 3 s limit took $took s"
+grep -q '"Lab77.Ex77_1_A#0"' "$tape/all/tape.jsonl" || fail "77.1's record was not kept: $(cat "$tape/all/tape.jsonl")"
+grep -q "^Ex77_2	77.2 timed out after 3 s and was stopped: an endless loop?" "$tape/all/stopped.txt" ||
+  fail "the endless runner is not named: $(cat "$tape/all/stopped.txt")"
+grep -q "^Ex77_3	crashed (SIGSEGV: test) in exercise 77.3, at labs/77_fake/exercise.cpp:9" "$tape/all/stopped.txt" ||
+  fail "the crash is not named with its place: $(cat "$tape/all/stopped.txt")"
+child=$(cat "$tape/child.pid" 2>/dev/null)
+alive() { [ -n "$(ps -o stat= -p "$1" 2>/dev/null | grep -v Z)" ]; }  # (a zombie waits for its reaper only)
+for _ in 1 2 3 4 5 6 7 8 9 10; do alive "$child" || break; sleep 0.2; done
+[ -n "$child" ] && ! alive "$child" || fail "a process the endless runner started is still running ($child)"
+[ "$failures" = 0 ] && echo "check's limits: a loop stopped with its children, a crash named, the rest kept"
+exit $((failures > 0))
