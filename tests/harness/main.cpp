@@ -61,6 +61,8 @@ class CheckListener : public ::testing::EmptyTestEventListener {
   CheckListener(bool expectStubs, std::string signatures)
       : expectStubs_(expectStubs), signatures_(std::move(signatures)) {}
   int exitCode = 0;
+  std::string expectMistake;  // --expect-mistake ID: a mutant of exercise ID runs (ctest's mutant tests)
+  std::string expectHint;     // --expect-hint TEXT: the hint it must get ("": none, and no other)
 
   void OnTestStart(const ::testing::TestInfo& info) override {
     current_ = exerciseOf(info.name());
@@ -114,6 +116,10 @@ class CheckListener : public ::testing::EmptyTestEventListener {
       exitCode = 1;
     }
     if (const char* file = std::getenv("WB_CHECK_JSON"); file && *file) std::ofstream(file) << verdicts.dump();
+    if (!expectMistake.empty()) {
+      exitCode = judgeMutant(first_.count(expectMistake) ? first_[expectMistake] : wb::test::Diagnosis{});
+      return;
+    }
     if (!expectStubs_ && done != int(manifest.size())) exitCode = 1;
     std::printf("  %d of %zu exercises pass their tests.%s\n", done, manifest.size(),
                 expectStubs_ ? (exitCode ? " Some stubs are not reported as NOT IMPLEMENTED."
@@ -122,6 +128,23 @@ class CheckListener : public ::testing::EmptyTestEventListener {
   }
 
  private:
+  // A mutant of exercise expectMistake must be caught as WRONG, with its own hint or none, never another's.
+  int judgeMutant(const wb::test::Diagnosis& d) const {
+    std::vector<std::string> hints;
+    for (const auto& line : d.details)
+      if (line.rfind("looks like a known mistake", 0) == 0) hints.push_back(line);
+    const bool caught = d.verdict == "WRONG";
+    bool hintRight = expectHint.empty() ? hints.empty() : false;
+    for (const auto& h : hints)
+      hintRight = hintRight || (!expectHint.empty() && h.find(expectHint) != std::string::npos);
+    std::printf(
+        "mutant of %s: %s; hint %s\n", expectMistake.c_str(),
+        caught ? "caught as WRONG" : ("NOT CAUGHT (" + (d.verdict.empty() ? "passes" : d.verdict) + ")").c_str(),
+        hintRight ? (hints.empty() ? "none (none expected)" : "right")
+                  : (hints.empty() ? ("MISSING: " + expectHint).c_str() : ("WRONG: " + hints[0]).c_str()));
+    return caught && hintRight ? 0 : 1;
+  }
+
   bool expectStubs_;
   std::string signatures_;  // --signatures F: each failing test's value, for tools/make_hints.py
   std::set<std::string> signed_;
@@ -167,7 +190,7 @@ int main(int argc, char** argv) {
   wb::installCrashReport();  // a crash in an exercise names its file:line
   ::testing::InitGoogleTest(&argc, argv);
   bool check = false, expectStubs = false;
-  std::string requests, signatures;
+  std::string requests, signatures, expectMistake, expectHint;
   for (int i = 1; i < argc; ++i) {
     const bool runner = !std::strcmp(argv[i], "--runner"), judge = !std::strcmp(argv[i], "--judge");
     if ((runner || judge) && i + 1 < argc)
@@ -178,13 +201,18 @@ int main(int argc, char** argv) {
       check = true, signatures = argv[++i];
     else if (!std::strcmp(argv[i], "--check"))
       check = true;
+    else if (!std::strcmp(argv[i], "--expect-mistake") && i + 1 < argc)
+      check = true, expectMistake = argv[++i];
+    else if (!std::strcmp(argv[i], "--expect-hint") && i + 1 < argc)
+      expectHint = argv[++i];
     else if (!std::strcmp(argv[i], "--expect-stubs"))
       check = expectStubs = true;
     else if (!std::strcmp(argv[i], "--update-golden"))
       wb::test::g_updateGolden = true;
     else {
       std::fprintf(stderr,
-                   "%s: unknown option '%s' (accepted: --check, --expect-stubs, --update-golden, --runner DIR, "
+                   "%s: unknown option '%s' (accepted: --check, --expect-stubs, --expect-mistake ID, --expect-hint "
+                   "TEXT, --update-golden, --runner DIR, "
                    "--requests F, --judge DIR, --signatures F, --gtest_*)\n",
                    argv[0], argv[i]);
       return 2;
@@ -205,7 +233,9 @@ int main(int argc, char** argv) {
   auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
   delete listeners.Release(listeners.default_result_printer());
   auto* listener = new CheckListener(expectStubs, signatures);
+  listener->expectMistake = expectMistake, listener->expectHint = expectHint;
   listeners.Append(listener);
   const int gtest = RUN_ALL_TESTS();
+  if (!expectMistake.empty()) return listener->exitCode;  // (the mutant's tests fail: that is the point)
   return listener->exitCode ? listener->exitCode : (expectStubs ? 0 : gtest);
 }
