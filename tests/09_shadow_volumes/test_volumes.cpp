@@ -119,17 +119,23 @@ TEST_F(GlTest, Ex09_2_FacesLightAndSilhouetteOnSyntheticTriangles) {
 // The same triangle moved to (5, -2, 3): the light must be taken relative to the triangle's corner. A
 // point light at (5, -2, 3.5) is in front of it (0.5 above its plane); at (5, -2, 2.5), behind.
 TEST_F(GlTest, Ex09_2_FacesLightAwayFromTheOrigin) {
-  const std::vector<glm::vec4> in = {{5, -2, 3.5f, 1}, {5, -2, 2.5f, 1}, {0, 0, 10, 1}, {0, 0, -10, 1}};
-  const float want[] = {1, 0, 1, 0};
+  // Four point lights (w = 1), then three directional ones (w = 0: xyz points towards the light, the
+  // same direction from every corner; taken as a point there, the second and third face away).
+  const std::vector<glm::vec4> in = {{5, -2, 3.5f, 1}, {5, -2, 2.5f, 1},      {0, 0, 10, 1}, {0, 0, -10, 1},
+                                     {0, 0, 1, 0},     {0.3f, 0.1f, 0.5f, 0}, {0, 0, -1, 0}};
+  const float want[] = {1, 0, 1, 0, 1, 1, 0};
   std::vector<glm::vec4> got;
   WB_RUN_GLSL(got, "09.2",
               "vec3 o = vec3(5.0, -2.0, 3.0);"
               "result.x = facesLight(o, o + vec3(1.0, 0.0, 0.0), o + vec3(0.0, 1.0, 0.0), IN(0));",
-              4, 1, in);
-  for (size_t k = 0; k < 4; ++k)
-    EXPECT_EQ(got[k].x, want[k]) << "WRONG: facesLight of the triangle at (5, -2, 3) facing +z, point light at ("
-                                 << in[k].x << ", " << in[k].y << ", " << in[k].z << "): measure the light from "
-                                 << "the triangle (light - a), case " << k;
+              7, 1, in);
+  for (size_t k = 0; k < 7; ++k)
+    EXPECT_EQ(got[k].x, want[k]) << "WRONG: facesLight of the triangle at (5, -2, 3) facing +z, "
+                                 << (in[k].w != 0 ? "point light at (" : "directional light towards (") << in[k].x
+                                 << ", " << in[k].y << ", " << in[k].z << ", w " << in[k].w << "): "
+                                 << (in[k].w != 0 ? "measure the light from the triangle (light - a)"
+                                                  : "a directional light's xyz is already the direction to it")
+                                 << ", case " << k;
 }
 
 // --- 09.3: extrusion ----------------------------------------------------------------------------------

@@ -43,6 +43,17 @@ std::string num(const std::string& text) {
 }
 
 // gtest's own account of a failed comparison, as "got X, want Y" with the tolerance.
+// A printed value as a number: true and false as 1 and 0 (strtod reads both as 0, which made a
+// "got true" look like a recorded "got false"), nothing for a value that is not a number.
+std::optional<double> valueOf(const std::string& text) {
+  if (text == "true") return 1.0;
+  if (text == "false") return 0.0;
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (end == text.c_str()) return std::nullopt;
+  return v;
+}
+
 std::optional<std::string> gotWant(const std::string& gtest, std::optional<double>& got) {
   std::smatch m;
   static const std::regex nearRe(
@@ -51,17 +62,17 @@ std::optional<std::string> gotWant(const std::string& gtest, std::optional<doubl
   static const std::regex eqRe(
       R"(Expected equality of these values:\n  (.+)\n(?:    Which is: (.+)\n)?  (.+)\n(?:    Which is: (.+))?)");
   if (std::regex_search(gtest, m, nearRe)) {
-    got = std::strtod(m[2].str().c_str(), nullptr);
+    got = valueOf(m[2].str());
     return "got " + num(m[2].str()) + ", want " + num(m[3].str()) + " (allowed difference " + num(m[4].str()) +
            ", off by " + num(m[1].str()) + ")";
   }
   if (std::regex_search(gtest, m, cmpRe)) {
-    got = std::strtod(m[4].str().c_str(), nullptr);
+    got = valueOf(m[4].str());
     return "got " + m[1].str() + " = " + num(m[4].str()) + ", want it " + m[2].str() + " " + num(m[5].str());
   }
   if (std::regex_search(gtest, m, eqRe)) {
     const std::string a = m[2].matched ? m[2].str() : m[1].str(), b = m[4].matched ? m[4].str() : m[3].str();
-    got = std::strtod(a.c_str(), nullptr);
+    got = valueOf(a);
     return "got " + num(a) + ", want " + num(b);
   }
   return std::nullopt;

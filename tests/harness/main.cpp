@@ -20,6 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -84,11 +85,21 @@ class CheckListener : public ::testing::EmptyTestEventListener {
       if (others_.empty() || others_.back().first != test_) others_.emplace_back(test_, std::move(d));
       return;
     }
+    // A known mistake recognised by any of the exercise's tests is named, whichever test's failure is shown.
+    for (const auto& line : d.details)
+      if (line.rfind("looks like a known mistake", 0) == 0 &&
+          std::find(hints_[current_].begin(), hints_[current_].end(), line) == hints_[current_].end())
+        hints_[current_].push_back(line);
     auto& slot = first_[current_];
     if (slot.verdict.empty() || rank(d) > rank(slot)) slot = std::move(d);
   }
   void OnTestProgramEnd(const ::testing::UnitTest&) override {
     const auto manifest = readManifest();
+    for (auto& [id, lines] : hints_)
+      for (const auto& line : lines)
+        if (auto& d = first_[id];
+            d.verdict == "WRONG" && std::find(d.details.begin(), d.details.end(), line) == d.details.end())
+          d.details.push_back(line);
     if (wb::test::tapeMode() == wb::test::TapeMode::Replay)
       std::printf("\nLab %s: judged from what your build produced (%s)\n", wb::variant::kLab,
                   wb::test::tapeDir().string().c_str());
@@ -152,6 +163,7 @@ class CheckListener : public ::testing::EmptyTestEventListener {
   std::string current_;        // the exercise of the running test
   std::string test_;           // and the test ("Suite.Name")
   std::map<std::string, wb::test::Diagnosis> first_;
+  std::map<std::string, std::vector<std::string>> hints_;            // the known mistakes each exercise's tests saw
   std::vector<std::pair<std::string, wb::test::Diagnosis>> others_;  // failing tests of no one exercise
 };
 
