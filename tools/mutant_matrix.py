@@ -34,7 +34,7 @@ def main():
         row["wrong_hints"] += "hint WRONG" in line
         if "caught as WRONG" not in line or "hint right" not in line and "hint none" not in line:
             print(f"  {test}: {line}")
-    print("| lab | mutants | caught as WRONG | hint right | no hint | wrong hints |")
+    print("| lab | mutants | caught as WRONG | own hint | no hint (none recorded) | wrong hints |")
     print("|---|---|---|---|---|---|")
     for lab, r in sorted(per_lab.items()):
         n = r["mutants"]
@@ -49,8 +49,10 @@ def main():
         ids = [e["id"] for e in json.loads((lab_dir / "exercises.json").read_text())["exercises"]]
         print(f"  {lab_dir.name}: " + ", ".join(f"{i} {count.get(i, 0)}" for i in ids))
     total = sum(r["mutants"] for r in per_lab.values())
-    bad = sum(r["mutants"] - r["caught"] + r["wrong_hints"] for r in per_lab.values())
-    print(f"\n{total} mutants run; " + ("all caught, no wrong hint" if not bad else f"{bad} not caught or wrongly hinted"))
+    missing = sum(r["hinted"] - r["hint_right"] - r["wrong_hints"] for r in per_lab.values())
+    bad = sum(r["mutants"] - r["caught"] + r["wrong_hints"] for r in per_lab.values()) + missing
+    print(f"\n{total} mutants run; " + ("all caught, each with its own hint or none, no wrong hint" if not bad
+                                        else f"{bad} not caught, wrongly hinted, or missing their recorded hint"))
     return 1 if bad or not total else 0
 
 
