@@ -56,6 +56,9 @@ std::string exerciseOf(const std::string& testName) {
   return std::regex_search(testName, m, re) ? m[1].str() + "." + m[2].str() : "";
 }
 
+// A line of a diagnosis that names a known mistake (diagnosis.cpp).
+bool namesKnownMistake(const std::string& line) { return line.rfind("looks like a known mistake", 0) == 0; }
+
 // Collects the first failure of each test and prints the per-exercise table at the end.
 class CheckListener : public ::testing::EmptyTestEventListener {
  public:
@@ -87,7 +90,7 @@ class CheckListener : public ::testing::EmptyTestEventListener {
     }
     // A known mistake recognised by any of the exercise's tests is named, whichever test's failure is shown.
     for (const auto& line : d.details)
-      if (line.rfind("looks like a known mistake", 0) == 0 &&
+      if (namesKnownMistake(line) &&
           std::find(hints_[current_].begin(), hints_[current_].end(), line) == hints_[current_].end())
         hints_[current_].push_back(line);
     auto& slot = first_[current_];
@@ -143,16 +146,18 @@ class CheckListener : public ::testing::EmptyTestEventListener {
   int judgeMutant(const wb::test::Diagnosis& d) const {
     std::vector<std::string> hints;
     for (const auto& line : d.details)
-      if (line.rfind("looks like a known mistake", 0) == 0) hints.push_back(line);
+      if (namesKnownMistake(line)) hints.push_back(line);
     const bool caught = d.verdict == "WRONG";
-    bool hintRight = expectHint.empty() ? hints.empty() : false;
-    for (const auto& h : hints)
-      hintRight = hintRight || (!expectHint.empty() && h.find(expectHint) != std::string::npos);
-    std::printf(
-        "mutant of %s: %s; hint %s\n", expectMistake.c_str(),
-        caught ? "caught as WRONG" : ("NOT CAUGHT (" + (d.verdict.empty() ? "passes" : d.verdict) + ")").c_str(),
-        hintRight ? (hints.empty() ? "none (none expected)" : "right")
-                  : (hints.empty() ? ("MISSING: " + expectHint).c_str() : ("WRONG: " + hints[0]).c_str()));
+    const bool hintRight =
+        expectHint.empty() ? hints.empty() : std::any_of(hints.begin(), hints.end(), [&](const std::string& h) {
+          return h.find(expectHint) != std::string::npos;
+        });
+    const std::string verdict =
+        caught ? "caught as WRONG" : "NOT CAUGHT (" + (d.verdict.empty() ? "passes" : d.verdict) + ")";
+    const std::string hint = hintRight       ? (hints.empty() ? "none (none expected)" : "right")
+                             : hints.empty() ? "MISSING: " + expectHint
+                                             : "WRONG: " + hints[0];
+    std::printf("mutant of %s: %s; hint %s\n", expectMistake.c_str(), verdict.c_str(), hint.c_str());
     return caught && hintRight ? 0 : 1;
   }
 
