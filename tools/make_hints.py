@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Records what each known mistake looks like, for `./workbook check`: tools/make_hints.py BUILD_DIR
+"""Records what each known mistake looks like, for `./workbook check`: tools/make_hints.py BUILD_DIR [NN ...]
 
 Every mutant in tests/mutants/NN_name/ is a known mistake, described by its first comment line
 ("# Mutant: the depths filtered, then compared once"). Its test binary (built in BUILD_DIR) runs
@@ -8,6 +8,7 @@ and the description go to tests/hints/NN_name.json (public: values and words, no
 and the descriptions to the "Common mistakes" section of labs/NN_name/README.md.
 `check` then names the mistake when a student's failing test sees the same value
 (tests/harness/diagnosis.cpp). Run it after changing a mutant or a test, and commit the result.
+Naming labs (01, 09_shadow_volumes) records those only, and leaves the others' hints as they are.
 """
 import json
 import os
@@ -78,10 +79,13 @@ def write_handout_section(lab, hints):
 
 
 def main():
-    if len(sys.argv) != 2:
-        sys.exit("usage: tools/make_hints.py BUILD_DIR")
+    if len(sys.argv) < 2:
+        sys.exit("usage: tools/make_hints.py BUILD_DIR [NN ...]")
     build = Path(sys.argv[1]).resolve()  # the tests' apps run in other folders
+    only = sys.argv[2:]
     for lab_dir in sorted((ROOT / "tests/mutants").iterdir()):
+        if only and not any(lab_dir.name.startswith(n) for n in only):
+            continue
         hints = []
         for mutant in sorted(lab_dir.glob("*.mutant")):
             exercise, hint = describe(mutant)

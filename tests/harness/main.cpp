@@ -142,21 +142,21 @@ class CheckListener : public ::testing::EmptyTestEventListener {
   }
 
  private:
-  // A mutant of exercise expectMistake must be caught as WRONG, with its own hint or none, never another's.
+  // A mutant of exercise expectMistake must be caught as WRONG, with its own hint or none, never another's:
+  // every hint shown names it (alone, or among the "one of these" that give the same value).
   int judgeMutant(const wb::test::Diagnosis& d) const {
     std::vector<std::string> hints;
     for (const auto& line : d.details)
       if (namesKnownMistake(line)) hints.push_back(line);
     const bool caught = d.verdict == "WRONG";
-    const bool hintRight =
-        expectHint.empty() ? hints.empty() : std::any_of(hints.begin(), hints.end(), [&](const std::string& h) {
-          return h.find(expectHint) != std::string::npos;
-        });
+    const auto other = std::find_if(hints.begin(), hints.end(),
+                                    [&](const std::string& h) { return h.find(expectHint) == std::string::npos; });
+    const bool hintRight = expectHint.empty() ? hints.empty() : !hints.empty() && other == hints.end();
     const std::string verdict =
         caught ? "caught as WRONG" : "NOT CAUGHT (" + (d.verdict.empty() ? "passes" : d.verdict) + ")";
     const std::string hint = hintRight       ? (hints.empty() ? "none (none expected)" : "right")
                              : hints.empty() ? "MISSING: " + expectHint
-                                             : "WRONG: " + hints[0];
+                                             : "WRONG: " + (other != hints.end() ? *other : hints[0]);
     std::printf("mutant of %s: %s; hint %s\n", expectMistake.c_str(), verdict.c_str(), hint.c_str());
     return caught && hintRight ? 0 : 1;
   }
