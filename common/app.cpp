@@ -167,7 +167,11 @@ void App::host(std::unique_ptr<Lab> lab) {
   checks_.reset();
   loadPicture();
   if (imgui_) {
-    checks_ = std::make_unique<LiveChecks>(std::string(variant::kLabExe) + "_tests");
+    // (the exercise folder is the first on the variant's shader path: <exercise_dir>/shaders)
+    const std::string shaders =
+        std::string(variant::kShaderPath).substr(0, std::string(variant::kShaderPath).find(';'));
+    checks_ = std::make_unique<LiveChecks>(std::string(variant::kLabExe) + "_tests", variant::kLabExe,
+                                           (fs::path(shaders).parent_path() / "exercise.cpp").string());
     checks_->start();
   }
 }

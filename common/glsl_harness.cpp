@@ -132,6 +132,25 @@ std::vector<std::string> glslExerciseFiles() {
   return files;
 }
 
+std::string exerciseAtLine(const std::string& file, int line) {
+  std::string text;
+  try {
+    text = readFile(submittedShaderFile(file));
+  } catch (const std::exception&) {
+    return "";
+  }
+  std::string owner;
+  int ownerLine = 0;
+  for (const auto& e : manifestExercises()) {
+    const std::string id = e.value("id", "");
+    if (!isGlslExercise(file, id)) continue;
+    const size_t at = findMarker(text, id);
+    const int markerLine = at == std::string::npos ? 0 : 1 + int(std::count(text.begin(), text.begin() + at, '\n'));
+    if (markerLine > 0 && markerLine <= line && markerLine > ownerLine) owner = id, ownerLine = markerLine;
+  }
+  return owner;
+}
+
 fs::path submittedShaderFile(const std::string& file) {
   const char* dir = std::getenv("WB_SUBMISSION_DIR");
   if (dir && *dir) return fs::absolute(fs::path(dir) / "shaders" / file);

@@ -28,6 +28,9 @@ size_t findMarker(const std::string& text, const std::string& id);
 /// (a judge, which was built with the solution, reads the student's GLSL there), else found on the
 /// shader search path.
 std::filesystem::path submittedShaderFile(const std::string& file);
+/// The GLSL exercise whose chunk of the student's shaders/`file` holds line `line` (1-based): the
+/// one with the nearest "// EXERCISE" marker above it; "" above the first marker or for no such file.
+std::string exerciseAtLine(const std::string& file, int line);
 /// True when the lab's manifest puts exercise `id` in shaders/`file`.
 bool isGlslExercise(const std::string& file, const std::string& id);
 /// The shader file (name under shaders/) that the manifest puts GLSL exercise `id` in, e.g.

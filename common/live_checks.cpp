@@ -13,9 +13,28 @@ namespace fs = std::filesystem;
 
 namespace wb {
 
-LiveChecks::LiveChecks(std::string testExe) : exe_(std::move(testExe)) {
+LiveChecks::LiveChecks(std::string testExe, const std::string& appExe, std::string exerciseCpp)
+    : exe_(std::move(testExe)), cpp_(std::move(exerciseCpp)) {
   std::error_code ec;
-  available_ = !exe_.empty() && fs::is_regular_file(exe_, ec);
+  const std::string name = fs::path(exe_).filename().string(), lab = name.substr(3, 2);
+  built_ = fs::last_write_time(appExe, ec);
+  if (ec) built_ = fs::file_time_type::min();
+  if (exe_.empty() || !fs::is_regular_file(exe_, ec))
+    missing_ = "checks not run: " + name + " is not built (./workbook check " + lab + " builds it)";
+  else if (!cpp_.empty() && fs::exists(cpp_, ec) && fs::last_write_time(exe_, ec) < fs::last_write_time(cpp_, ec))
+    missing_ =
+        "checks not run: " + name + " is older than your exercise.cpp (./workbook check " + lab + " rebuilds it)";
+  available_ = missing_.empty();
+}
+
+std::string LiveChecks::note() const {
+  if (!missing_.empty()) return missing_;
+  std::error_code ec;
+  const auto edited = cpp_.empty() ? fs::file_time_type::min() : fs::last_write_time(cpp_, ec);
+  if (!ec && edited > built_)
+    return "exercise.cpp changed after this build: these are the running build's verdicts; restart the lab to run "
+           "your edit";
+  return "";
 }
 
 LiveChecks::~LiveChecks() {

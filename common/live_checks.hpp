@@ -6,6 +6,7 @@
 /// case, or "not implemented", and "implemented, not checked" while they run.
 #pragma once
 #include <atomic>
+#include <filesystem>
 #include <map>
 #include <mutex>
 #include <string>
@@ -22,16 +23,21 @@ struct CheckVerdict {
 /// Runs the checks on a thread of its own; at most one run at a time.
 class LiveChecks {
  public:
-  /// `testExe`: the lab's test binary (this build's app name + "_tests"); without it, nothing runs.
-  explicit LiveChecks(std::string testExe);
+  /// `testExe`: the lab's test binary (this build's app name + "_tests"); without it, or when it is
+  /// older than `exerciseCpp` (the C++ exercise file, which it may then not hold), nothing runs.
+  /// `appExe`: the running app; an `exerciseCpp` edited after it was built is noted (note()).
+  LiveChecks(std::string testExe, const std::string& appExe, std::string exerciseCpp);
   ~LiveChecks();
   LiveChecks(const LiveChecks&) = delete;
   LiveChecks& operator=(const LiveChecks&) = delete;
 
   /// Starts a run (or, while one runs, another right after it).
   void start();
-  /// False when the test binary is not built (./workbook check NN builds it).
+  /// False when the test binary is not built, or older than the app (./workbook check NN builds it).
   bool available() const { return available_; }
+  /// Why the checks do not run, or why their verdicts may not be those of the running code (the C++
+  /// exercise file was edited after the app was built); empty when they are.
+  std::string note() const;
   /// True while a run is under way (the verdicts are then those of the file before the change).
   bool running() const { return running_; }
   /// The verdicts of the last finished run, by exercise id.
@@ -39,8 +45,10 @@ class LiveChecks {
 
  private:
   void runOnce();
-  std::string exe_;
+  std::string exe_, cpp_;
   bool available_ = false;
+  std::string missing_;                    // why nothing runs
+  std::filesystem::file_time_type built_;  // the app's build time
   std::atomic<bool> running_{false}, again_{false}, quit_{false};
   std::thread thread_;
   mutable std::mutex mutex_;

@@ -69,6 +69,11 @@ void infoPanel(const ShellInput& in, ShellState& state) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", Context::renderer().c_str());
   ImGui::Separator();
   if (in.checks && in.checks->running()) ImGui::TextColored(kGrey, "checking ...");
+  if (const std::string note = in.checks ? in.checks->note() : ""; !note.empty()) {
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * kWrapEm);
+    ImGui::TextColored(kYellow, "%s", note.c_str());
+    ImGui::PopTextWrapPos();
+  }
   const auto verdicts = in.checks ? in.checks->verdicts() : std::map<std::string, CheckVerdict>{};
   for (const auto& e : board.exercises()) exerciseRow(e, in.checks, verdicts);
   ImGui::Separator();

@@ -123,7 +123,8 @@ Diagnosis diagnose(const std::string& test, const std::string& message) {
   d.headline = lines.empty() ? d.verdict : lines[0];
   // A compile error: the compiler's lines that name a file and line (the student's, first).
   for (const auto& l : lines)
-    if (l.find(": error") != std::string::npos && d.details.size() < 4 && l != d.headline) d.details.push_back(l);
+    if (l.find(": error") != std::string::npos && d.details.size() < 4 && d.headline.find(l) == std::string::npos)
+      d.details.push_back(l);  // (each once: not again when the headline quotes it)
   if (d.verdict == "WRONG") {
     if (const auto gw = gotWant(gtest, d.got)) d.details.push_back(*gw);
     // (a shader's time against the reference's is no signature of a mistake: it varies from run to run)

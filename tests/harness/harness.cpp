@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <regex>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -333,6 +334,17 @@ static nlohmann::json drawExercise(const std::string& id, const fs::path& out, c
                     joined(args, {"--replay-exercises", calls.string()}));
 }
 
+// The exercise whose GLSL a compile error ("path/shaders/exercise.glsl:13: error: ...") is in, or "".
+static std::string glslErrorOwner(const std::string& cause) {
+  static const std::regex where(R"(([^\s:]+):(\d+): error)");
+  std::smatch m;
+  if (!std::regex_search(cause, m, where)) return "";
+  const std::string name = fs::path(m[1].str()).filename().string();
+  for (const std::string& file : glslExerciseFiles())
+    if (file == name) return exerciseAtLine(file, std::stoi(m[2].str()));
+  return "";
+}
+
 // Draws exercise `id` (drawExercise) with a record, and reads it. Fails with ERROR / NOT
 // IMPLEMENTED when it did not run, and always in a runner (which decides nothing).
 static ::testing::AssertionResult runIsolated(const std::string& id, const fs::path& out,
@@ -375,6 +387,11 @@ static ::testing::AssertionResult runIsolated(const std::string& id, const fs::p
              << "ERROR: blocked by " << by << ": the lab " << (code == 124 ? "ran out of time" : "crashed")
              << " in exercise " << by << " before it could draw this one; fix " << by << " first. " << cause;
     }
+    // A compile error in another exercise's chunk of a shared shader file blocks this one too.
+    if (const std::string by = glslErrorOwner(cause); !by.empty() && by != id)
+      return ::testing::AssertionFailure() << "ERROR: blocked by " << by << ": the GLSL of exercise " << by
+                                           << " does not compile, so the lab could not draw this one; fix " << by
+                                           << " first (" << by << " shows the error).";
     return ::testing::AssertionFailure() << "ERROR: the lab "
                                          << (code == 124  ? "timed out"
                                              : code > 128 ? "crashed"
