@@ -32,6 +32,14 @@ done
 for path in workbook labs/01_depth_map/exercise.cpp tests/framework docs/adding-a-lab.md; do
   [ -e "$student/$path" ] || fail "the student edition lacks $path"
 done
+# The handed-out exercise shaders, for check's C++ runs: every lab's, as committed.
+for lab in "$student"/labs/[0-9][0-9]_*/; do
+  for f in "$lab"shaders/exercise*; do
+    [ -f "$f" ] || continue
+    copy="$student/tests/stubs/$(basename "$lab")/shaders/$(basename "$f")"
+    cmp -s "$f" "$copy" || fail "the student edition lacks the stub $copy, or it differs from $f"
+  done
+done
 
 # The students' README: the quick start and the lab table, and no instructor command.
 readme="$student/README.md"
