@@ -4,7 +4,8 @@
 #   - `run 3` is lab 03, and without a display it renders headlessly to build/renders/lab03.png;
 #   - `run 03 --help` passes --help alone, and says nothing about rendering headlessly;
 #   - a malformed or unknown lab number gets one line and exit code 2;
-#   - `docs` works in a tree without build/ and Doxygen warns about nothing (skipped without doxygen).
+#   - `docs` works in a tree without build/, Doxygen warns about nothing, and its main page is the
+#     README with links to the handouts (skipped without doxygen).
 # Usage: workbook_cli_test.sh SCRATCH_DIR
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -65,6 +66,11 @@ if command -v doxygen >/dev/null; then
   [ "$code" = 0 ] || fail "docs failed in a tree without build/ (exit $code): $out"
   [ -f "$tree/build/docs/html/index.html" ] || fail "docs wrote no build/docs/html/index.html: $out"
   if grep -qi "warning" <<<"$out"; then fail "Doxygen warns: $(grep -i warning <<<"$out")"; fi
+  # Students land on the main page: the README, with each lab's handout one click away.
+  index=$tree/build/docs/html/index.html
+  grep -q "Shadow Lab Workbook" "$index" && grep -q 'href="md_labs_01_depth_map_README.html"' "$index" ||
+    fail "the docs' main page is not the README with links to the handouts"
+  [ -f "$tree/build/docs/html/md_labs_10_cascades_README.html" ] || fail "the docs have no page for lab 10's handout"
 else
   echo "(doxygen is not installed: ./workbook docs is not tried)"
 fi
