@@ -96,7 +96,7 @@ endfunction()
 # fit); the tests of its exercise must still pass. Together they bracket every tolerance.
 # File format (tests/mutants/NN_name/NAME.mutant or NAME.perturbation), one "key: value" per line:
 #   exercise: 01.3   file: shaders/exercise.glsl   find: <exact text>   replace: <text>
-# with one or more find/replace pairs, applied in order.
+# with one or more find/replace pairs, applied in order; each find occurs once in the file.
 function(_wb_add_mutant lab nn mutant_file)
   get_filename_component(name ${mutant_file} NAME_WE)
   get_filename_component(kind ${mutant_file} LAST_EXT)
@@ -133,9 +133,14 @@ function(_wb_add_mutant lab nn mutant_file)
         string(REPLACE "@WB_SEMICOLON@" ";" find "${find}")
         string(REPLACE "@WB_SEMICOLON@" ";" replace "${replace}")
         string(FIND "${text}" "${find}" at)
+        string(FIND "${text}" "${find}" last REVERSE)
         if(at EQUAL -1)
           message(FATAL_ERROR "${mutant_file}: the text '${find}' is not in solutions/${lab}/${file}; "
                               "update the mutant to match the solution.")
+        elseif(NOT at EQUAL last)
+          # (twice is often in two exercises' chunks: the mutant would be two mistakes, not one)
+          message(FATAL_ERROR "${mutant_file}: the text '${find}' occurs more than once in "
+                              "solutions/${lab}/${file}; find a line that only its exercise has.")
         endif()
         string(REPLACE "${find}" "${replace}" text "${text}")
       endforeach()

@@ -18,6 +18,15 @@ glm::dvec3 project(const glm::mat4& m, const glm::vec3& p) {
   return glm::dvec3(c) / c.w;
 }
 
+// A view whose up vector is parallel to the light direction is degenerate: NaN entries. (A count, not
+// a bool, so that the failure carries a value by which check can recognise the mistake.)
+int nonFiniteEntries(const glm::mat4& m) {
+  int count = 0;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) count += !std::isfinite(m[c][r]);
+  return count;
+}
+
 struct Box {
   glm::vec3 lo, hi;
   glm::vec3 corner(int i) const { return {(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z}; }
@@ -37,6 +46,8 @@ TEST(Lab01, Ex01_1_DirectionalFitContainsAndHugsTheBounds) {
     for (const auto& box : kBoxes) {
       glm::mat4 m;
       WB_TRY_EXERCISE(m = WB_CALL(lab01::directionalLightViewProj(d, box.lo, box.hi)));
+      ASSERT_EQ(nonFiniteEntries(m), 0) << "WRONG: the matrix has NaN or infinite entries for direction (" << d.x
+                                        << ", " << d.y << ", " << d.z << "): is the up vector parallel to the light?";
       glm::dvec3 lo(1e9), hi(-1e9);
       for (int i = 0; i < 8; ++i) {
         const glm::dvec3 p = project(m, box.corner(i));
@@ -60,6 +71,8 @@ TEST(Lab01, Ex01_1_DirectionalIsOrthographicAlongTheLight) {
   for (const auto& d : kDirections) {
     glm::mat4 m;
     WB_TRY_EXERCISE(m = WB_CALL(lab01::directionalLightViewProj(d, kBoxes[0].lo, kBoxes[0].hi)));
+    ASSERT_EQ(nonFiniteEntries(m), 0) << "WRONG: the matrix has NaN or infinite entries for direction (" << d.x << ", "
+                                      << d.y << ", " << d.z << "): is the up vector parallel to the light?";
     const glm::vec4 w = glm::transpose(m)[3];
     ASSERT_NEAR(glm::length(glm::vec4(w.x, w.y, w.z, w.w - 1)), 0, 1e-5)
         << "WRONG: the last row is not (0,0,0,1): not orthographic";

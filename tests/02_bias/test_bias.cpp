@@ -31,14 +31,19 @@ TEST_F(GlTest, Ex02_1_BiasedCompareMatchesReference) {
 
 // --- 02.2: slope-scaled bias, clamped --------------------------------------------------------------
 // Reference: min(constant + scale * tan(acos(cosTheta)), max), in double.
+// The last two cosines are the pitfalls: 0 (the light grazes the surface: tan is infinite, so the
+// clamp decides, and no slope scale means no slope term) and one float step past 1, which a dot
+// product of two normalised vectors can give (theta is 0 there).
 TEST_F(GlTest, Ex02_2_SlopeScaledBiasGrowsWithTheAngleAndIsClamped) {
   std::vector<glm::vec4> in;
   std::vector<double> want;
-  for (float c : {1.0f, 0.9f, 0.6f, 0.3f, 0.1f, 0.02f})
+  for (float c : {1.0f, 0.9f, 0.6f, 0.3f, 0.1f, 0.02f, 0.0f, std::nextafter(1.0f, 2.0f)})
     for (float scale : {0.0f, 0.002f, 0.01f})
       for (float maxBias : {0.005f, 0.05f}) {
         in.emplace_back(c, 0.001f, scale, maxBias);
-        want.push_back(std::min(0.001 + scale * std::tan(std::acos(double(c))), double(maxBias)));
+        // (tan(acos(0)) is 1.6e16 in double, so a zero scale gives no slope term at 0 either)
+        const double theta = std::acos(std::min(double(c), 1.0));
+        want.push_back(std::min(0.001 + scale * std::tan(theta), double(maxBias)));
       }
   std::vector<glm::vec4> got;
   WB_RUN_GLSL(got, "02.2", "result.x = slopeScaledBias(IN(0).x, IN(0).y, IN(0).z, IN(0).w);", int(want.size()), 1, in);

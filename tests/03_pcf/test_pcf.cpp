@@ -110,19 +110,25 @@ TEST_F(GlTest, Ex03_3_GaussianWeightAndFilter) {
     ASSERT_NEAR(w[k].x, want, 1e-5) << "WRONG: gaussianWeight(" << win[k].x << ", " << win[k].y << "; sigma "
                                     << win[k].z << ")";
   }
+  // Tap (i, j) is (i, j) * spacing texels away, and weighted by that offset in texels (sigma is in texels).
   const auto in = probes();
-  std::vector<glm::vec4> got;
-  WB_RUN_GLSL(got, "03.3", "result.x = pcfGaussian(wb_tex0, IN(0).xyz, 2, 1.0, 1.2, IN(0).w);", int(in.size()), 1, in,
-              {map.texture.id()});
-  for (size_t k = 0; k < in.size(); ++k) {
-    double sum = 0, weights = 0;
-    for (int j = -2; j <= 2; ++j)
-      for (int i = -2; i <= 2; ++i) {
-        const double wt = std::exp(-(i * i + j * j) / (2.0 * 1.2 * 1.2));
-        sum += wt * map.lit(in[k].x + double(i) / kSize, in[k].y + double(j) / kSize, double(in[k].z) - in[k].w);
-        weights += wt;
-      }
-    ASSERT_NEAR(got[k].x, sum / weights, 1e-5) << "WRONG: the weighted mean, normalised by the weights, case " << k;
+  for (float spacing : {1.0f, 2.0f}) {
+    std::vector<glm::vec4> got;
+    WB_RUN_GLSL(got, "03.3",
+                "result.x = pcfGaussian(wb_tex0, IN(0).xyz, 2, " + std::to_string(spacing) + ", 1.2, IN(0).w);",
+                int(in.size()), 1, in, {map.texture.id()});
+    for (size_t k = 0; k < in.size(); ++k) {
+      double sum = 0, weights = 0;
+      for (int j = -2; j <= 2; ++j)
+        for (int i = -2; i <= 2; ++i) {
+          const double ox = i * spacing, oy = j * spacing;  // texels
+          const double wt = std::exp(-(ox * ox + oy * oy) / (2.0 * 1.2 * 1.2));
+          sum += wt * map.lit(in[k].x + ox / kSize, in[k].y + oy / kSize, double(in[k].z) - in[k].w);
+          weights += wt;
+        }
+      ASSERT_NEAR(got[k].x, sum / weights, 1e-5)
+          << "WRONG: the weighted mean, normalised by the weights, spacing " << spacing << ", case " << k;
+    }
   }
 }
 

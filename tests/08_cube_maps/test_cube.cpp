@@ -141,6 +141,13 @@ TEST_F(GlTest, Ex08_4_LooksUpTheFaceOfTheDirectionAndCompares) {
   std::vector<glm::vec4> in;
   for (const glm::vec4& d : directions())
     for (float dist : {0.5f, 1.5f, 2.5f, 4.5f}) in.emplace_back(glm::vec3(d) / glm::length(glm::vec3(d)) * dist, 0);
+  // Then the bias: points just in front of and just behind the surface each direction finds, 0.03 from
+  // it (within the bias: lit) and 0.08 beyond it (past the bias: shadowed).
+  for (const glm::vec4& d : directions()) {
+    const glm::vec3 u = glm::vec3(d) / glm::length(glm::vec3(d));
+    const float surface = float(cube.at(glm::dvec3(u)) * far);
+    for (float off : {-0.03f, 0.03f, 0.08f}) in.emplace_back(u * (surface + off), 0);
+  }
   std::vector<glm::vec4> got;
   WB_RUN_GLSL(got, "08.4", "result.x = cubeShadow(wb_tex0, IN(0).xyz + vec3(1.0, 1.0, 1.0), vec3(1.0), 10.0, 0.05);",
               int(in.size()), 1, in, {cube.texture.id()});

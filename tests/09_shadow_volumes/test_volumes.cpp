@@ -159,31 +159,59 @@ TEST_F(GlTest, Ex09_3_ExtrudesAwayFromTheLightToInfinity) {
 }
 
 // --- 09.4 and 09.5: the stencil operations ------------------------------------------------------------
+// A stencil operation by name: gtest prints the enum's number (7682), which says nothing to a student.
+static std::string opName(unsigned op) {
+  switch (op) {
+    case GL_KEEP:
+      return "GL_KEEP";
+    case GL_ZERO:
+      return "GL_ZERO";
+    case GL_REPLACE:
+      return "GL_REPLACE";
+    case GL_INCR:
+      return "GL_INCR";
+    case GL_DECR:
+      return "GL_DECR";
+    case GL_INVERT:
+      return "GL_INVERT";
+    case GL_INCR_WRAP:
+      return "GL_INCR_WRAP";
+    case GL_DECR_WRAP:
+      return "GL_DECR_WRAP";
+    default:
+      return "not a stencil operation (" + std::to_string(op) + ")";
+  }
+}
 TEST(Lab09, Ex09_4_ZPassCountsFacesInFrontOfTheScene) {
   lab09::StencilSetup s;
   WB_TRY_EXERCISE(s = lab09::zPassSetup());
-  EXPECT_EQ(s.front.depthPass, unsigned(GL_INCR_WRAP)) << "WRONG: a front face in front of the scene enters a "
-                                                       << "volume: +1, wrapping (GL_INCR_WRAP)";
+  EXPECT_EQ(s.front.depthPass, unsigned(GL_INCR_WRAP))
+      << "WRONG: a front face in front of the scene enters a "
+      << "volume: +1, wrapping (GL_INCR_WRAP); got " << opName(s.front.depthPass);
   EXPECT_EQ(s.back.depthPass, unsigned(GL_DECR_WRAP)) << "WRONG: a back face in front of the scene leaves it: -1, "
-                                                      << "wrapping (GL_DECR_WRAP)";
+                                                      << "wrapping (GL_DECR_WRAP); got " << opName(s.back.depthPass);
   for (auto [op, what] : {std::pair{s.front.stencilFail, "front, stencil fail"},
                           {s.front.depthFail, "front, depth fail"},
                           {s.back.stencilFail, "back, stencil fail"},
                           {s.back.depthFail, "back, depth fail"}})
-    EXPECT_EQ(op, unsigned(GL_KEEP)) << "WRONG: z-pass counts only faces that pass the depth test (" << what << ")";
+    EXPECT_EQ(op, unsigned(GL_KEEP)) << "WRONG: z-pass counts only faces that pass the depth test (" << what
+                                     << ": want GL_KEEP, got " << opName(op) << ")";
   EXPECT_EQ(int(s.caps), 0) << "WRONG: z-pass needs no caps: a ray from the eye enters and leaves through the sides";
 }
 
 TEST(Lab09, Ex09_5_ZFailCountsFacesBehindTheSceneWithCaps) {
   lab09::StencilSetup s;
   WB_TRY_EXERCISE(s = lab09::zFailSetup());
-  EXPECT_EQ(s.back.depthFail, unsigned(GL_INCR_WRAP)) << "WRONG: a back face behind the scene: +1, wrapping";
-  EXPECT_EQ(s.front.depthFail, unsigned(GL_DECR_WRAP)) << "WRONG: a front face behind the scene: -1, wrapping";
+  EXPECT_EQ(s.back.depthFail, unsigned(GL_INCR_WRAP))
+      << "WRONG: a back face behind the scene: +1, wrapping (GL_INCR_WRAP); got " << opName(s.back.depthFail);
+  EXPECT_EQ(s.front.depthFail, unsigned(GL_DECR_WRAP))
+      << "WRONG: a front face behind the scene: -1, wrapping (GL_DECR_WRAP); got " << opName(s.front.depthFail);
   for (auto [op, what] : {std::pair{s.front.stencilFail, "front, stencil fail"},
                           {s.front.depthPass, "front, depth pass"},
                           {s.back.stencilFail, "back, stencil fail"},
                           {s.back.depthPass, "back, depth pass"}})
-    EXPECT_EQ(op, unsigned(GL_KEEP)) << "WRONG: z-fail counts only faces that fail the depth test (" << what << ")";
+    EXPECT_EQ(op, unsigned(GL_KEEP)) << "WRONG: z-fail counts only faces that fail the depth test (" << what
+                                     << ": want GL_KEEP, got " << opName(op) << ")";
   EXPECT_EQ(int(s.caps), 1)
       << "WRONG: z-fail counts behind the scene, out to infinity: the volumes must be closed there "
       << "(caps), or a ray that leaves through the missing cap is never counted";

@@ -22,26 +22,32 @@ WB_CALLABLE(lab10::stableCascade);
 // --- 10.1: split distances --------------------------------------------------------------------------
 // near 1, far 100, four cascades. Uniform: 1 + 99 i / 4 = 1, 25.75, 50.5, 75.25, 100. Logarithmic:
 // 100^(i/4) = 1, 3.16228, 10, 31.6228, 100. Practical, lambda 0.5: their means, 14.4561, 30.25, 53.4364.
+// Lambda 0 and 1 on a range of their own, near 2, far 162: uniform 2 + 160 i / 4 = 2, 42, 82, 122, 162;
+// logarithmic 2 * 81^(i/4) = 2, 6, 18, 54, 162. (On near 1, far 100 they would repeat the uniform and
+// logarithmic rows value for value, and `check` could not tell a lambda the wrong way round from a
+// scheme computed as the other.)
 TEST(Lab10, Ex10_1_SplitsByHand) {
   struct Case {
+    float nearPlane, farPlane;
     lab10::SplitScheme scheme;
     float lambda;
     std::vector<float> want;
     const char* what;
   };
   const Case cases[] = {
-      {lab10::SplitScheme::Uniform, 0, {1, 25.75f, 50.5f, 75.25f, 100}, "uniform"},
-      {lab10::SplitScheme::Logarithmic, 0, {1, 3.162278f, 10, 31.62278f, 100}, "logarithmic"},
-      {lab10::SplitScheme::Practical, 0.5f, {1, 14.45614f, 30.25f, 53.43639f, 100}, "practical, lambda 0.5"},
-      {lab10::SplitScheme::Practical, 0, {1, 25.75f, 50.5f, 75.25f, 100}, "practical, lambda 0 (uniform)"},
-      {lab10::SplitScheme::Practical, 1, {1, 3.162278f, 10, 31.62278f, 100}, "practical, lambda 1 (logarithmic)"},
+      {1, 100, lab10::SplitScheme::Uniform, 0, {1, 25.75f, 50.5f, 75.25f, 100}, "uniform"},
+      {1, 100, lab10::SplitScheme::Logarithmic, 0, {1, 3.162278f, 10, 31.62278f, 100}, "logarithmic"},
+      {1, 100, lab10::SplitScheme::Practical, 0.5f, {1, 14.45614f, 30.25f, 53.43639f, 100}, "practical, lambda 0.5"},
+      {2, 162, lab10::SplitScheme::Practical, 0, {2, 42, 82, 122, 162}, "practical, lambda 0 (uniform)"},
+      {2, 162, lab10::SplitScheme::Practical, 1, {2, 6, 18, 54, 162}, "practical, lambda 1 (logarithmic)"},
   };
   for (const auto& c : cases) {
     std::vector<float> got;
-    WB_TRY_EXERCISE(got = WB_CALL(lab10::splitDistances(1, 100, 4, c.scheme, c.lambda)));
+    WB_TRY_EXERCISE(got = WB_CALL(lab10::splitDistances(c.nearPlane, c.farPlane, 4, c.scheme, c.lambda)));
     ASSERT_EQ(got.size(), 5u) << "WRONG: " << c.what << ": four cascades have five split distances, C_0 .. C_4";
     for (size_t i = 0; i < 5; ++i)
-      EXPECT_NEAR(got[i], c.want[i], 1e-5 * c.want[i]) << "WRONG: " << c.what << ", C_" << i << " (near 1, far 100)";
+      EXPECT_NEAR(got[i], c.want[i], 1e-5 * c.want[i])
+          << "WRONG: " << c.what << ", C_" << i << " (near " << c.nearPlane << ", far " << c.farPlane << ")";
   }
 }
 

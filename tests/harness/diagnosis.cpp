@@ -97,10 +97,13 @@ std::string knownMistake(const std::string& test, double got) {
   std::vector<std::string> found;  // several mistakes can give the same value: name them all
   for (const auto& h : hints["hints"]) {
     if (h.value("test", "") != test || !h.contains("value")) continue;
-    const bool same =
-        h["value"].is_null()  // NaN or infinity (JSON has neither): a division by zero
-            ? !std::isfinite(got)
-            : std::abs(got - h["value"].get<double>()) <= 1e-3 * std::max(1e-6, std::abs(h["value"].get<double>()));
+    // Whole numbers (counts, GL enums: GL_INCR is 7682, GL_KEEP 7680) must be equal; other values
+    // within 0.1%.
+    const double want = h["value"].is_null() ? 0.0 : h["value"].get<double>();
+    const bool whole = want == std::round(want) && got == std::round(got);
+    const bool same = h["value"].is_null()  // NaN or infinity (JSON has neither): a division by zero
+                          ? !std::isfinite(got)
+                          : whole ? got == want : std::abs(got - want) <= 1e-3 * std::max(1e-6, std::abs(want));
     const std::string hint = h.value("hint", "");
     if (same && std::find(found.begin(), found.end(), hint) == found.end()) found.push_back(hint);
   }

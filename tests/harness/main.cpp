@@ -157,8 +157,14 @@ class CheckListener : public ::testing::EmptyTestEventListener {
     const std::string hint = hintRight       ? (hints.empty() ? "none (none expected)" : "right")
                              : hints.empty() ? "MISSING: " + expectHint
                                              : "WRONG: " + (other != hints.end() ? *other : hints[0]);
-    std::printf("mutant of %s: %s; hint %s\n", expectMistake.c_str(), verdict.c_str(), hint.c_str());
-    return caught && hintRight ? 0 : 1;
+    // Attribution, where other exercises' tests ran too (the whole lab, tools/mutant_matrix.py
+    // --whole-lab): no other exercise may be marked wrong; "blocked by" (an ERROR) is allowed.
+    std::string blamed;
+    for (const auto& [id, diagnosis] : first_)
+      if (id != expectMistake && diagnosis.verdict == "WRONG") blamed += (blamed.empty() ? "" : ", ") + id;
+    std::printf("mutant of %s: %s; hint %s; %s\n", expectMistake.c_str(), verdict.c_str(), hint.c_str(),
+                blamed.empty() ? "no other exercise marked wrong" : ("ALSO MARKED WRONG: " + blamed).c_str());
+    return caught && hintRight && blamed.empty() ? 0 : 1;
   }
 
   bool expectStubs_;
