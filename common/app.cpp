@@ -220,6 +220,7 @@ void App::hotReload() {
   // A changed file rebuilds its programs; a failed build keeps the last good program.
   if (frameIndex_ % 15 != 0) return;
   for (auto& p : lab_->programs_) p.reloadIfChanged();
+  if (checks_) checks_->pollEdits();
   if (lab_->board_.probedFilesChanged()) {
     lab_->board_.probe();
     if (checks_) checks_->start();

@@ -16,7 +16,8 @@ namespace wb {
 LiveChecks::LiveChecks(std::string testExe, const std::string& appExe, std::string exerciseCpp)
     : exe_(std::move(testExe)), cpp_(std::move(exerciseCpp)) {
   std::error_code ec;
-  const std::string name = fs::path(exe_).filename().string(), lab = name.substr(3, 2);
+  const std::string name = fs::path(exe_).filename().string();  // "lab09_tests"
+  const std::string lab = name.size() >= 5 ? name.substr(3, 2) : "NN";
   built_ = fs::last_write_time(appExe, ec);
   if (ec) built_ = fs::file_time_type::min();
   if (exe_.empty() || !fs::is_regular_file(exe_, ec))
@@ -25,13 +26,18 @@ LiveChecks::LiveChecks(std::string testExe, const std::string& appExe, std::stri
     missing_ =
         "checks not run: " + name + " is older than your exercise.cpp (./workbook check " + lab + " rebuilds it)";
   available_ = missing_.empty();
+  pollEdits();
+}
+
+void LiveChecks::pollEdits() {
+  std::error_code ec;
+  const auto edited = cpp_.empty() ? fs::file_time_type::min() : fs::last_write_time(cpp_, ec);
+  edited_ = !ec && edited > built_;
 }
 
 std::string LiveChecks::note() const {
   if (!missing_.empty()) return missing_;
-  std::error_code ec;
-  const auto edited = cpp_.empty() ? fs::file_time_type::min() : fs::last_write_time(cpp_, ec);
-  if (!ec && edited > built_)
+  if (edited_)
     return "exercise.cpp changed after this build: these are the running build's verdicts; restart the lab to run "
            "your edit";
   return "";

@@ -36,8 +36,10 @@ class LiveChecks {
   /// False when the test binary is not built, or older than the app (./workbook check NN builds it).
   bool available() const { return available_; }
   /// Why the checks do not run, or why their verdicts may not be those of the running code (the C++
-  /// exercise file was edited after the app was built); empty when they are.
+  /// exercise file was edited after the app was built, as last polled); empty when they are.
   std::string note() const;
+  /// Looks again at the C++ exercise file's time (the app polls with its shader reloads, not per frame).
+  void pollEdits();
   /// True while a run is under way (the verdicts are then those of the file before the change).
   bool running() const { return running_; }
   /// The verdicts of the last finished run, by exercise id.
@@ -49,6 +51,7 @@ class LiveChecks {
   bool available_ = false;
   std::string missing_;                    // why nothing runs
   std::filesystem::file_time_type built_;  // the app's build time
+  bool edited_ = false;                    // exercise.cpp is newer than the app (pollEdits())
   std::atomic<bool> running_{false}, again_{false}, quit_{false};
   std::thread thread_;
   mutable std::mutex mutex_;

@@ -3,6 +3,7 @@
 // This build has no solution (like the student edition), so nothing isolates the chunks: lab 01's
 // stub file is broken in 01.4's chunk and handed to the lab through WB_SHADER_OVERLAY.
 #include "common/glsl_harness.hpp"
+#include "common/shader.hpp"
 #include "common/variant.hpp"
 #include "tests/harness/harness.hpp"
 
@@ -11,7 +12,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 namespace fs = std::filesystem;
 
@@ -20,10 +20,7 @@ namespace {
 class BrokenChunk : public ::testing::Test {
  protected:
   void SetUp() override {
-    std::ifstream in(fs::path(wb::variant::kLabDir) / "shaders/exercise.glsl");
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string glsl = text.str();
+    std::string glsl = wb::readFile(fs::path(wb::variant::kLabDir) / "shaders/exercise.glsl");
     const size_t marker = wb::findMarker(glsl, "01.4");
     ASSERT_NE(marker, std::string::npos) << "lab 01's stub has no 01.4 marker";
     const size_t body = glsl.find("return", marker);

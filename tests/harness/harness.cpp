@@ -339,10 +339,7 @@ static std::string glslErrorOwner(const std::string& cause) {
   static const std::regex where(R"(([^\s:]+):(\d+): error)");
   std::smatch m;
   if (!std::regex_search(cause, m, where)) return "";
-  const std::string name = fs::path(m[1].str()).filename().string();
-  for (const std::string& file : glslExerciseFiles())
-    if (file == name) return exerciseAtLine(file, std::stoi(m[2].str()));
-  return "";
+  return exerciseAtLine(fs::path(m[1].str()).filename().string(), std::stoi(m[2].str()));
 }
 
 // Draws exercise `id` (drawExercise) with a record, and reads it. Fails with ERROR / NOT
