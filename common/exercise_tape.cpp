@@ -50,10 +50,10 @@ void ExerciseTape::startReplay(const fs::path& file) {
   try {
     const json j = parseShallowJson(std::string(std::istreambuf_iterator<char>(in), {}));
     for (const auto& [id, calls] : j.at("calls").items()) {
-      calls_[id];  // an exercise with no calls is still replayed: as failed, never as the app's own code
+      replayed_[id];  // an exercise with no calls is still replayed: as failed, never as the app's own code
       for (const auto& c : calls)
-        calls_[id].push_back({stateFromName(c.at("state").get<std::string>()), c.value("message", std::string()),
-                              c.value("value", json())});
+        replayed_[id].push_back({stateFromName(c.at("state").get<std::string>()), c.value("message", std::string()),
+                                 c.value("value", json())});
     }
   } catch (const std::exception& e) {
     throw Error("malformed --replay-exercises file '" + file.string() + "': " + e.what());
@@ -62,14 +62,14 @@ void ExerciseTape::startReplay(const fs::path& file) {
 }
 
 void ExerciseTape::add(const std::string& id, Call call) {
-  auto& calls = calls_[id];
+  auto& calls = recorded_[id];
   // A run that calls an exercise every frame repeats itself: keep the first calls and the last.
   if (calls.size() >= 64) calls.pop_back();
   calls.push_back(std::move(call));
 }
 
 ExerciseTape::Call ExerciseTape::next(const std::string& id) {
-  const auto& calls = calls_.at(id);
+  const auto& calls = replayed_.at(id);
   if (calls.empty()) return {ExerciseState::Failed, "the recorded run holds no call of this exercise", {}};
   size_t& k = used_[id];
   const Call& c = calls[std::min(k, calls.size() - 1)];
@@ -80,7 +80,7 @@ ExerciseTape::Call ExerciseTape::next(const std::string& id) {
 void ExerciseTape::save() const {
   if (!recording()) return;
   json all = json::object();
-  for (const auto& [id, calls] : calls_)
+  for (const auto& [id, calls] : recorded_)
     for (const auto& c : calls)
       all[id].push_back({{"state", stateName(c.state)}, {"message", c.message}, {"value", c.value}});
   std::ofstream out(recordFile_);

@@ -34,8 +34,9 @@ class ExerciseTape {
   /// True while recording.
   bool recording() const { return !recordFile_.empty(); }
   /// True when exercise `id` is replayed (the file holds calls of it).
-  bool replays(const std::string& id) const { return calls_.count(id) && replaying_; }
-  /// Records a call of `id`.
+  bool replays(const std::string& id) const { return replaying_ && replayed_.count(id); }
+  /// Records a call of `id` (of an exercise that is not replayed: a run may replay some exercises
+  /// and record the others, and the file it saves holds only what it recorded).
   void add(const std::string& id, Call call);
   /// The next recorded call of `id` (the last one again when this run calls it more often).
   Call next(const std::string& id);
@@ -45,7 +46,8 @@ class ExerciseTape {
  private:
   std::filesystem::path recordFile_;
   bool replaying_ = false;
-  std::map<std::string, std::vector<Call>> calls_;
+  std::map<std::string, std::vector<Call>> replayed_;  // from startReplay()
+  std::map<std::string, std::vector<Call>> recorded_;  // for save()
   std::map<std::string, size_t> used_;
 };
 

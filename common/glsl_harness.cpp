@@ -1,6 +1,7 @@
 #include "common/glsl_harness.hpp"
 
 #include "common/error.hpp"
+#include "common/exercise_chunks.hpp"
 #include "common/shader.hpp"
 #include "common/variant.hpp"
 
@@ -17,27 +18,7 @@ namespace fs = std::filesystem;
 
 namespace wb {
 
-size_t findMarker(const std::string& text, const std::string& id) {
-  const std::string marker = "// EXERCISE " + id;
-  for (size_t at = text.find(marker); at != std::string::npos; at = text.find(marker, at + 1)) {
-    const size_t after = at + marker.size();
-    if (after == text.size() || std::string(" \t\r\n:").find(text[after]) != std::string::npos) return at;
-  }
-  return std::string::npos;
-}
-
 namespace {
-
-// [begin, end) of the chunk of `id`: from the line with its marker to the next marker or the end.
-std::pair<size_t, size_t> chunk(const std::string& text, const std::string& id) {
-  const std::string marker = "// EXERCISE " + id;
-  size_t begin = findMarker(text, id);
-  if (begin == std::string::npos) throw Error("no '" + marker + "' marker in the exercise file");
-  begin = text.rfind('\n', begin) == std::string::npos ? 0 : text.rfind('\n', begin) + 1;
-  size_t end = text.find("// EXERCISE ", begin + marker.size());
-  end = end == std::string::npos ? text.size() : text.rfind('\n', end) + 1;
-  return {begin, end};
-}
 
 // The kernel's compute shader: declarations, the functions (keeping their own source numbers, 0 =
 // origin, then its includes, so errors name the student's file and line), then main().
@@ -90,7 +71,7 @@ std::string keepOnlyChunk(const std::string& mine, const std::string& solution, 
     }
     // The solution's chunk under a source number of its own, so that a compiler message about it
     // (the student's chunk can break it, with a #define) is named, never quoted (mapShaderLog).
-    const auto [s0, s1] = chunk(solution, id);
+    const auto [s0, s1] = chunkRange(solution, id);
     out += "#line " + std::to_string(lineAt(solution, s0)) + " " + std::to_string(kReferenceSource) + "\n" +
            solution.substr(s0, s1 - s0);
     if (!out.empty() && out.back() != '\n') out += "\n";

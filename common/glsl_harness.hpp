@@ -3,6 +3,7 @@
 /// exercise can be run with the solution versions of the others. Tests and the lab's status panel
 /// both use it.
 #pragma once
+#include "common/exercise_chunks.hpp"  // findMarker()
 #include "common/gl.hpp"
 
 #include <glm/vec4.hpp>
@@ -21,9 +22,6 @@ namespace wb {
 /// solution when `id` is a C++ exercise (so a GLSL stub never blocks it).
 /// `file` is the name on the shader search path, e.g. "exercise.glsl".
 std::string isolatedExerciseSource(const std::string& file, const std::string& id);
-/// Where exercise `id`'s marker "// EXERCISE <id>" is in `text`: the exact id, followed by a space,
-/// a colon or the line's end (so "// EXERCISE 01" is not 01.3's marker), or npos.
-size_t findMarker(const std::string& text, const std::string& id);
 /// The student's shader `file`: from the submission being graded when WB_SUBMISSION_DIR names one
 /// (a judge, which was built with the solution, reads the student's GLSL there), else found on the
 /// shader search path.

@@ -1,6 +1,7 @@
 #include "common/shader.hpp"
 
 #include "common/error.hpp"
+#include "common/exercise_chunks.hpp"
 #include "common/include_policy.hpp"
 #include "common/variant.hpp"
 
@@ -10,6 +11,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <regex>
+#include <set>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -33,8 +35,15 @@ std::string withoutBomAndCr(const std::string& text) {
   return s;
 }
 
+// The text of `file`: its substitute when it has one (hot reload's last good chunks), else its own.
+std::string textOf(const fs::path& file, const Substitutes& substitutes) {
+  const auto s = substitutes.find(file);
+  return s == substitutes.end() ? readFile(file) : s->second;
+}
+
 void expand(const std::string& rawText, const fs::path& origin, const std::string& defines,
-            const std::vector<fs::path>& path, ShaderSource& src, std::ostringstream& out, int depth) {
+            const std::vector<fs::path>& path, const Substitutes& substitutes, ShaderSource& src,
+            std::ostringstream& out, int depth) {
   if (depth > 16) throw Error(origin.string() + ": #include nested too deeply (a cycle?)");
   const std::string text = withoutBomAndCr(rawText);
   const int index = static_cast<int>(src.files.size());
@@ -43,6 +52,8 @@ void expand(const std::string& rawText, const fs::path& origin, const std::strin
   static const std::regex includeRe(R"(^\s*#\s*include\s+\"([^\"]+)\")");
   static const std::regex thisFileRe("^#line (\\d+) " + std::to_string(kThisFileSource) + "$");
   std::istringstream in(text);
+  // An included file's lines are its own from its first (the top file's #version must come first).
+  if (depth > 0) out << "#line 1 " << index << "\n";
   int line = 0;
   for (std::string s; std::getline(in, s);) {
     ++line;
@@ -60,7 +71,7 @@ void expand(const std::string& rawText, const fs::path& origin, const std::strin
           break;
         }
       if (!fs::exists(target)) target = findShaderFile(m[1].str(), path);
-      expand(readFile(target), target, "", path, src, out, depth + 1);
+      expand(textOf(target, substitutes), target, "", path, substitutes, src, out, depth + 1);
       out << "#line " << line + 1 << " " << index << "\n";
     } else if (std::regex_search(s, m, thisFileRe)) {
       out << "#line " << m[1].str() << " " << index << "\n";  // (see kThisFileSource)
@@ -97,10 +108,10 @@ fs::path findShaderFile(const std::string& name, const std::vector<fs::path>& pa
 }
 
 ShaderSource preprocessShader(const std::string& text, const fs::path& origin, const std::string& defines,
-                              const std::vector<fs::path>& path) {
+                              const std::vector<fs::path>& path, const Substitutes& substitutes) {
   ShaderSource src;
   std::ostringstream out;
-  expand(text, origin, defines, path, src, out, 0);
+  expand(text, origin, defines, path, substitutes, src, out, 0);
   src.text = out.str();
   return src;
 }
@@ -204,7 +215,7 @@ bool setSharedShaderDefines(const std::string& defines) {
   return true;
 }
 
-ProgramId Program::build() {
+ProgramId Program::build(const Substitutes& substitutes) {
   const auto path = shaderSearchPath();
   builtShared_ = sharedDefines();
   const std::string defines = builtShared_ + defines_;
@@ -216,7 +227,7 @@ ProgramId Program::build() {
       sources.emplace_back(stage.type, preprocessShader(inlineText_, stage.file, defines, path));
     } else {
       const fs::path file = findShaderFile(stage.file, path);
-      sources.emplace_back(stage.type, preprocessShader(readFile(file), file, defines, path));
+      sources.emplace_back(stage.type, preprocessShader(textOf(file, substitutes), file, defines, path, substitutes));
     }
     for (const auto& f : sources.back().second.files)
       if (fs::exists(f)) inputs_.emplace_back(f, fs::last_write_time(f));
@@ -235,10 +246,69 @@ Program Program::tryLoad(std::vector<ShaderStage> stages, std::string defines) {
   p.defines_ = std::move(defines);
   try {
     p.program_ = p.build();
+    p.rememberGoodChunks();
   } catch (const Error& e) {
     p.error_ = e.what();
   }
   return p;
+}
+
+void Program::rememberGoodChunks() {
+  goodTexts_.clear();
+  for (const auto& input : inputs_) try {
+      if (std::string text = readFile(input.first); text.find("// EXERCISE ") != std::string::npos)
+        goodTexts_[input.first] = std::move(text);
+    } catch (const Error&) {  // gone since: nothing to fall back to
+    }
+}
+
+// True when exercise `id`'s chunk of `text` still returns the stubs' WB_TODO.
+static bool stillStub(const std::string& text, const std::string& id) {
+  if (id.empty() || findMarker(text, id) == std::string::npos) return false;
+  const auto [begin, end] = chunkRange(text, id);
+  return text.find("WB_TODO", begin) < end;
+}
+
+// What a fallback build drew, for the panel: `swapped` holds (file, chunk id) pairs.
+static std::string fallbackNote(const std::vector<std::pair<fs::path, std::string>>& swapped, bool stub) {
+  if (swapped.size() != 1) return "the last version that compiled is drawn";
+  const std::string& id = swapped[0].second;
+  if (id.empty())
+    return "drawn with your last helpers that compiled (above the first exercise) and your current exercises";
+  return "drawn with your last " + id + " that compiled" + (stub ? " (still the stub: stripes)" : "") +
+         " and your current other exercises";
+}
+
+bool Program::buildWithLastGoodChunks() {
+  std::vector<std::pair<fs::path, std::string>> changed;  // (file, chunk id)
+  Substitutes now;
+  for (const auto& [file, good] : goodTexts_) try {
+      now[file] = readFile(file);
+      for (const auto& id : changedChunks(good, now[file])) changed.emplace_back(file, id);
+    } catch (const Error&) {
+    }
+  // Each changed chunk alone from its last good text (the one that broke is found by trying), then
+  // all of them: the whole last good text of every exercise file.
+  std::vector<std::vector<std::pair<fs::path, std::string>>> tries;
+  for (const auto& c : changed) tries.push_back({c});
+  if (changed.size() > 1) tries.push_back(changed);
+  for (const auto& swap : tries) {
+    Substitutes texts;
+    for (const auto& [file, good] : goodTexts_) {
+      std::set<std::string> ids;
+      for (const auto& [f, id] : swap)
+        if (f == file) ids.insert(id);
+      if (!ids.empty()) texts[file] = withChunksFrom(now[file], good, ids);
+    }
+    try {
+      program_ = build(texts);
+    } catch (const Error&) {
+      continue;
+    }
+    fallback_ = fallbackNote(swap, stillStub(goodTexts_[swap[0].first], swap[0].second));
+    return true;
+  }
+  return false;
 }
 
 bool Program::reloadIfChanged() {
@@ -248,13 +318,15 @@ bool Program::reloadIfChanged() {
     if (fs::last_write_time(file, ec) != time) changed = true;
   }
   if (!changed) return false;
+  fallback_.clear();
   try {
     program_ = build();
     error_.clear();
+    rememberGoodChunks();
     return true;
   } catch (const Error& e) {
-    error_ = e.what();  // keep drawing with the last good program
-    return false;
+    error_ = e.what();  // keep drawing: the broken exercise's last good chunk, or the last good program
+    return buildWithLastGoodChunks();
   }
 }
 

@@ -7,6 +7,7 @@
 #include <glm/mat4x4.hpp>
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,10 +35,14 @@ struct ShaderSource {
   std::vector<std::filesystem::path> files;  ///< files read; `#line L N` refers to files[N]
 };
 
+/// Texts to read instead of files' own, by path (hot reload's last good chunks).
+using Substitutes = std::map<std::filesystem::path, std::string>;
+
 /// Expands `text` (read from `origin`): inserts `defines` after `#version`, resolves `#include`
-/// relative to the including file and then on `path`, and emits `#line` so errors map back.
+/// relative to the including file and then on `path` (an included file in `substitutes` is read
+/// from there), and emits `#line` so errors map back.
 ShaderSource preprocessShader(const std::string& text, const std::filesystem::path& origin, const std::string& defines,
-                              const std::vector<std::filesystem::path>& path);
+                              const std::vector<std::filesystem::path>& path, const Substitutes& substitutes = {});
 
 /// The line of a compiler's message that names file:line ("labs/03_pcf/shaders/exercise.glsl:13: error:
 /// ...", relative to the checkout), or its first line.
@@ -77,10 +82,15 @@ class Program {
   bool ok() const { return program_.id() != 0; }
 
   /// Rebuilds if any file it was read from changed, or the shared defines did; returns true when a
-  /// new program is in use.
+  /// new program is in use. When the edit does not compile, an exercise file's changed chunks
+  /// (exercise_chunks.hpp) are tried one by one with their last good text, so that the exercises
+  /// that still compile are drawn as they are now; failing that, the last good program stays.
   bool reloadIfChanged();
   /// The error of the last failed build ("" when the current program is up to date).
   const std::string& error() const { return error_; }
+  /// What is drawn meanwhile when error() is set and a chunk's last good text was swapped in, e.g.
+  /// "drawn with your last 09.3 that compiled and your current other exercises"; "" otherwise.
+  const std::string& fallback() const { return fallback_; }
   /// The GL program name.
   GLuint id() const { return program_.id(); }
   /// Binds the program.
@@ -95,7 +105,9 @@ class Program {
   void set(const char* name, const glm::mat4& v) const;  ///< @copydoc set(const char*,float) const
 
  private:
-  ProgramId build();  // throws wb::Error
+  ProgramId build(const Substitutes& substitutes = {});  // throws wb::Error
+  void rememberGoodChunks();       // the exercise files' texts, after a build from the files alone
+  bool buildWithLastGoodChunks();  // after a failed build; true when a new program is in use
   std::vector<ShaderStage> stages_;
   std::string builtShared_;  // the shared defines it was built with
   std::string defines_;
@@ -103,6 +115,8 @@ class Program {
   std::vector<std::pair<std::filesystem::path, std::filesystem::file_time_type>> inputs_;
   ProgramId program_;
   std::string error_;
+  std::string fallback_;
+  std::map<std::filesystem::path, std::string> goodTexts_;  // exercise files at the last good build
 };
 
 }  // namespace wb

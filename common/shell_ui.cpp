@@ -100,7 +100,10 @@ void infoPanel(const ShellInput& in, ShellState& state) {
     if (p.error().empty() || std::find(shown.begin(), shown.end(), where) != shown.end()) continue;
     shown.push_back(where);
     ImGui::Separator();
-    ImGui::TextColored(kRed, p.ok() ? "Shader error (last good version drawn):" : "Shader error (nothing drawn yet):");
+    const std::string meanwhile = !p.fallback().empty() ? p.fallback()
+                                  : p.ok()              ? "the last version that compiled is drawn"
+                                                        : "nothing drawn yet";
+    wrappedRed("Shader error (" + meanwhile + "):");
     wrappedRed(where);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", p.error().c_str());
   }

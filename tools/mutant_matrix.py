@@ -4,10 +4,11 @@ as its ctest test runs it (label mutants: --expect-mistake and --expect-hint), t
 as WRONG, attributed (no other exercise marked wrong), the hint right (its own, or none where none is
 recorded), wrong hints, and how many mutants each exercise has.
 
-Usage: tools/mutant_matrix.py BUILD_DIR [--jobs N] [--whole-lab] [--labs 01,09]
+Usage: tools/mutant_matrix.py BUILD_DIR [--jobs N] [--whole-lab] [--labs 01,09] [--only NAME,NAME]
   --whole-lab  runs every test of the mutant's lab, not only its exercise's, so that attribution means
                something: a mistake in 09.1 may block 09.3 (an ERROR that says so) but never make it
                WRONG. Several minutes per lab on 2 cores; ctest -L mutants runs the exercise's tests only.
+  --only       the mutants of these names (file names without .mutant) alone.
 """
 import json
 import re
@@ -53,8 +54,11 @@ def main():
     jobs = int(argv[argv.index("--jobs") + 1]) if "--jobs" in argv else 2
     labs = argv[argv.index("--labs") + 1].split(",") if "--labs" in argv else []
     whole_lab = "--whole-lab" in argv
+    only = argv[argv.index("--only") + 1].split(",") if "--only" in argv else []
     mutants = [m for m in sorted((ROOT / "tests/mutants").glob("*/*.mutant"))
-               if not labs or m.parent.name[:2] in labs]
+               if (not labs or m.parent.name[:2] in labs) and (not only or m.stem in only)]
+    if only and len(mutants) != len(only):
+        sys.exit(f"--only: {len(only)} names, {len(mutants)} mutants found in tests/mutants")
     with ThreadPoolExecutor(jobs) as pool:
         lines = list(pool.map(lambda m: run(build, m, whole_lab), mutants))
     per_lab = defaultdict(lambda: defaultdict(int))

@@ -2,6 +2,7 @@
 // exit code, never a crash; compiler errors name the original file and line; a broken shader edit
 // keeps the last good program.
 #include "common/crash_report.hpp"
+#include "common/exercise_tape.hpp"
 #include "common/ground_truth.hpp"
 #include "common/prefilter.hpp"
 #include "common/run_record.hpp"
@@ -161,6 +162,97 @@ TEST_F(GlTest, HotReloadKeepsTheLastGoodProgram) {
   EXPECT_TRUE(p.reloadIfChanged());
   EXPECT_TRUE(p.error().empty());
   unsetenv("WB_SHADER_OVERLAY");
+}
+
+// An edit that breaks one exercise's chunk keeps that chunk's last good text and the other
+// exercises' current ones: a student who improves 99.1 and breaks 99.2 in one save sees the new
+// 99.1, and the panel says what is drawn (common/exercise_chunks.hpp).
+namespace {
+// Runs `p` (a compute shader writing v[0] and v[1]) and returns what it wrote.
+std::pair<float, float> runTwoValues(const wb::Program& p) {
+  GLuint buffer = 0;
+  glCreateBuffers(1, &buffer);
+  glNamedBufferData(buffer, 2 * sizeof(float), nullptr, GL_DYNAMIC_READ);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer);
+  p.use();
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  float v[2] = {0, 0};
+  glGetNamedBufferSubData(buffer, 0, sizeof v, v);
+  glDeleteBuffers(1, &buffer);
+  return {v[0], v[1]};
+}
+void touch(const fs::path& file, const std::string& text, int seconds) {
+  writeFile(file, text);
+  fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(seconds));
+}
+}  // namespace
+
+TEST_F(GlTest, HotReloadKeepsTheBrokenExercisesLastGoodChunk) {
+  const fs::path dir = scratch("chunks");
+  writeFile(dir / "chunks_test.comp",
+            "#version 450 core\nlayout(local_size_x = 1) in;\nlayout(std430, binding = 0) buffer Out { float v[]; };\n"
+            "#include \"chunks.glsl\"\nvoid main() { v[0] = first(); v[1] = second(); }\n");
+  const fs::path chunks = dir / "chunks.glsl";
+  writeFile(chunks,
+            "float helper() { return 1.0; }\n// EXERCISE 99.1\nfloat first() { return helper(); }\n"
+            "// EXERCISE 99.2\nfloat second() { return -1e30; } // WB_TODO\n");
+  setenv("WB_SHADER_OVERLAY", dir.c_str(), 1);
+  wb::Program p = wb::Program::tryLoad({{GL_COMPUTE_SHADER, "chunks_test.comp"}});
+  ASSERT_TRUE(p.ok()) << p.error();
+  EXPECT_EQ(runTwoValues(p), std::make_pair(1.0f, -1e30f));
+  // 99.1 improved, 99.2 broken (line 5), in one save.
+  touch(chunks,
+        "float helper() { return 1.0; }\n// EXERCISE 99.1\nfloat first() { return 3.0; }\n"
+        "// EXERCISE 99.2\nfloat second() { return oops; }\n",
+        2);
+  EXPECT_TRUE(p.reloadIfChanged()) << "the current 99.1 with the last good 99.2 compiles: " << p.error();
+  EXPECT_NE(p.error().find(chunks.string() + ":5"), std::string::npos) << p.error();
+  EXPECT_EQ(p.fallback(),
+            "drawn with your last 99.2 that compiled (still the stub: stripes) and your current other exercises");
+  EXPECT_EQ(runTwoValues(p), std::make_pair(3.0f, -1e30f)) << "the new 99.1, the last good 99.2";
+  // 99.2 fixed: everything is current, and nothing is said.
+  touch(chunks,
+        "float helper() { return 1.0; }\n// EXERCISE 99.1\nfloat first() { return 3.0; }\n"
+        "// EXERCISE 99.2\nfloat second() { return 5.0; }\n",
+        4);
+  EXPECT_TRUE(p.reloadIfChanged()) << p.error();
+  EXPECT_TRUE(p.error().empty() && p.fallback().empty());
+  EXPECT_EQ(runTwoValues(p), std::make_pair(3.0f, 5.0f));
+  // The helpers above the first marker broken: they go back alone, and the line numbers of the
+  // chunks below stay the file's (an error further down would still name its own line).
+  touch(chunks,
+        "float helper() { return 2.0 }\n// EXERCISE 99.1\nfloat first() { return helper(); }\n"
+        "// EXERCISE 99.2\nfloat second() { return 5.0; }\n",
+        6);
+  EXPECT_TRUE(p.reloadIfChanged()) << p.error();
+  EXPECT_EQ(p.fallback(),
+            "drawn with your last helpers that compiled (above the first exercise) and your current "
+            "exercises");
+  EXPECT_EQ(runTwoValues(p), std::make_pair(1.0f, 5.0f));
+  unsetenv("WB_SHADER_OVERLAY");
+}
+
+// A run may replay some exercises (the reference's results) and record the others (check's runner,
+// tests/harness/reference_calls.hpp): an exercise recorded during the run is never replayed from
+// its own first call, and the saved file holds only what was recorded.
+TEST(ExerciseTape, ReplaysSomeExercisesAndRecordsTheOthers) {
+  const fs::path dir = scratch("tape");
+  writeFile(dir / "reference.json",
+            R"({"calls": {"10.2": [{"state": "implemented", "message": "", "value": [1, 2]}]}})");
+  wb::ExerciseTape tape;
+  tape.startReplay(dir / "reference.json");
+  tape.startRecording(dir / "recorded.json");
+  EXPECT_TRUE(tape.replays("10.2"));
+  EXPECT_FALSE(tape.replays("10.1"));
+  tape.add("10.1", {wb::ExerciseState::Implemented, "", nullptr});  // a probe's call, then the real one
+  EXPECT_FALSE(tape.replays("10.1")) << "10.1 is recorded in this run, not replayed from its own calls";
+  tape.add("10.1", {wb::ExerciseState::Implemented, "", nlohmann::json::array({3, 4})});
+  EXPECT_EQ(tape.next("10.2").value, nlohmann::json::array({1, 2}));
+  tape.save();
+  const auto saved = nlohmann::json::parse(wb::readFile(dir / "recorded.json"));
+  EXPECT_EQ(saved.at("calls").size(), 1u) << saved.dump();
+  EXPECT_EQ(saved.at("calls").at("10.1").size(), 2u) << saved.dump();
 }
 
 // The lab command line: bad input gets one clear line and exit code 2, no display exit code 3.

@@ -6,6 +6,7 @@
 #include "common/run_record.hpp"
 #include "common/shader.hpp"
 #include "common/variant.hpp"
+#include "tests/harness/reference_calls.hpp"
 #include "tests/harness/tape.hpp"
 
 #include <sys/wait.h>
@@ -211,14 +212,26 @@ static std::string isolatedGlsl(const std::string& id, const fs::path& out) {
   return "WB_SHADER_OVERLAY=" + quote(out.string()) + " ";
 }
 
-// Direct (ctest): this build's lab draws exercise `id` with GLSL isolation. A GLSL exercise runs in
-// the solution's app (so C++ stubs cannot block it), a C++ exercise in this build's app with the
-// solution's GLSL.
+// Direct (ctest, check): this build's lab draws exercise `id` in isolation. Every other C++
+// exercise's result is the reference's (reference_calls.hpp), so a mistake there cannot block this
+// one; a GLSL exercise runs in the solution's app where there is one, a C++ exercise in this
+// build's app, both with the solution's GLSL for the other exercises. Updating the golden data
+// records the reference's calls instead.
 static nlohmann::json runDirect(const std::string& id, const fs::path& out, const std::vector<std::string>& args) {
   fs::create_directories(out);
   const bool glsl = !glslExerciseFile(id).empty();
   const std::string exe = glsl && !updatingGolden() ? trustedExe() : variant::kLabExe;
-  return runAppJson(out, "WB_STRICT_GL=1 " + isolatedGlsl(id, out), exe, args);
+  const fs::path reference = referenceCallsFile(args), others = out / "reference_calls.json";
+  std::vector<std::string> all = args;
+  if (updatingGolden()) {
+    fs::create_directories(reference.parent_path());
+    all = joined(args, {"--record-exercises", reference.string()});
+  } else if (varySeed() < 0 && referenceCallsOfOthers(reference, id, others)) {
+    all = joined(args, {"--replay-exercises", others.string()});
+  }
+  auto run = runAppJson(out, "WB_STRICT_GL=1 " + isolatedGlsl(id, out), exe, all);
+  if (updatingGolden() && keepReferenceCalls(reference)) std::printf("updated %s\n", reference.string().c_str());
+  return run;
 }
 
 // What a runner's app needs of the scene's arguments: not the measurements or images, only a run.
@@ -246,23 +259,29 @@ static std::string recordEnv() {
 
 // A runner's lab run under tape key `key`: this build's app records what its C++ exercises return
 // (--record-exercises), and the run ({"code", "log", "command"}) and that file go on the tape. A
-// judge gets both back. Returns the run; the file is `out`/exercises.json.
-static nlohmann::json recordRun(const std::string& key, const fs::path& out, const std::vector<std::string>& args) {
-  const fs::path calls = out / "exercises.json";
+// judge gets both back. Returns the run; the file is `out`/exercises.json. For exercise `id` in a
+// scene compared with the golden (check), the other C++ exercises replay the reference's results
+// (reference_calls.hpp, found by the scene's arguments `scene`): 10.2's corners are then computed
+// from the reference's splits, and a wrong 10.1 is marked in 10.1 alone.
+static nlohmann::json recordRun(const std::string& key, const fs::path& out, const std::vector<std::string>& args,
+                                const std::string& id = "", const std::vector<std::string>& scene = {}) {
+  const fs::path calls = out / "exercises.json", others = out / "reference_calls.json";
   fs::create_directories(out);
   fs::remove(calls);
-  const auto run = observeJson(key, [&] {
-    return runAppJson(out, recordEnv(), variant::kLabExe, joined(args, {"--record-exercises", calls.string()}));
-  });
+  std::vector<std::string> all = joined(args, {"--record-exercises", calls.string()});
+  if (!id.empty() && varySeed() < 0 && referenceCallsOfOthers(referenceCallsFile(scene), id, others))
+    all = joined(all, {"--replay-exercises", others.string()});
+  const auto run = observeJson(key, [&] { return runAppJson(out, recordEnv(), variant::kLabExe, all); });
   observeFile(key + ".exercises", calls);
   return run;
 }
 
 // The exercises whose results exercise `id` takes as its inputs in the lab ("uses" in the trusted
-// manifest, labs/NN/exercises.json): 10.3 fits the slices that 10.1 and 10.2 computed. The grader
-// names in WB_REPLAY_USES the used exercises that failed their own tests; only those are replayed
-// (one that passed gets the solution's code, so a student cannot feed the graded exercise made-up
-// inputs in one test alone). Without WB_REPLAY_USES (./workbook check) every used exercise is.
+// manifest, labs/NN/exercises.json): 10.3 fits the slices that 10.1 and 10.2 computed. Only in a
+// varied scene, which the judge's reference draws again on the same inputs (the grader's). The
+// grader names in WB_REPLAY_USES the used exercises that failed their own tests; only those are
+// replayed (one that passed gets the solution's code, so a student cannot feed the graded exercise
+// made-up inputs in one test alone). Without WB_REPLAY_USES every used exercise is.
 static std::vector<std::string> exerciseUses(const std::string& id) {
   std::vector<std::string> uses;
   try {
@@ -271,6 +290,9 @@ static std::vector<std::string> exerciseUses(const std::string& id) {
       if (e.at("id") == id) uses = e.value("uses", std::vector<std::string>{});
   } catch (const std::exception&) {
   }
+  // Compared with the golden (check, ctest), which was drawn with the reference's inputs: the used
+  // exercises are the reference's too, so a mistake upstream is marked upstream alone.
+  if (varySeed() < 0) return {};
   if (const char* failed = std::getenv("WB_REPLAY_USES")) {
     const std::string list = "," + std::string(failed) + ",";
     uses.erase(std::remove_if(uses.begin(), uses.end(),
@@ -306,6 +328,27 @@ static bool keepOnlyCalls(const fs::path& file, const std::string& id, const fs:
   }
 }
 
+// The arguments of a judge's run of exercise `id`, replaying `calls` (the student's results for it,
+// or none). The student edition has no solution app: the judge's app is the student's, so every
+// other C++ exercise's result is the reference's recorded one (reference_calls.hpp), as in a
+// direct run; the solution's app computes them itself.
+static std::vector<std::string> withOthers(const std::string& id, const fs::path& out,
+                                           const std::vector<std::string>& args, const fs::path& calls = {}) {
+  nlohmann::json replay = nlohmann::json::object();
+  const fs::path others = out / "reference_calls.json";
+  if (!variant::kSolutionExe[0] && varySeed() < 0 && referenceCallsOfOthers(referenceCallsFile(args), id, others))
+    replay = parseShallowJson(readFile(others)).at("calls");
+  if (!calls.empty()) {
+    const auto mine = parseShallowJson(readFile(calls));  // (kept alive: items() refers into it)
+    for (const auto& [exercise, list] : mine.at("calls").items()) replay[exercise] = list;
+  }
+  if (replay.empty()) return args;
+  const fs::path file = out / "judged_calls.json";
+  std::ofstream(file) << nlohmann::json{{"calls", replay}}.dump(-1, ' ', false,
+                                                                nlohmann::json::error_handler_t::replace);
+  return joined(args, {"--replay-exercises", file.string()});
+}
+
 // Where the pixels of exercise `id` come from, by mode: direct (ctest), runDirect(); a runner only
 // records what a C++ exercise returned in its own app (--record-exercises, kept on the tape) and
 // has nothing to do for a GLSL exercise; a judge has the trusted app draw the scene, with the
@@ -322,16 +365,15 @@ static nlohmann::json drawExercise(const std::string& id, const fs::path& out, c
     throw Error("planned");
   }
   if (glsl && tapeMode() == TapeMode::Record) throw Error("recorded for the judge");
-  if (glsl) return runAppJson(out, "WB_STRICT_GL=1 " + isolatedGlsl(id, out), trustedExe(), args);
-  const auto mine = recordRun(key, out, runnerArgs(args));
+  if (glsl) return runAppJson(out, "WB_STRICT_GL=1 " + isolatedGlsl(id, out), trustedExe(), withOthers(id, out, args));
+  const auto mine = recordRun(key, out, runnerArgs(args), id, args);
   const fs::path calls = out / "exercises.json";
   if (tapeMode() == TapeMode::Record) throw Error("recorded for the judge");
   if (mine.value("code", 128) != 0) return mine;  // the student's app failed: that is the result
   if (!fs::exists(calls) || !keepOnlyCalls(calls, id, out / "upstream.json"))
     throw Error("your lab never ran exercise " + id + " in this scene (its run left no result):\n" +
                 (heldOutJudging() ? std::string("(held-out run)") : mine.value("log", std::string())));
-  return runAppJson(out, "WB_STRICT_GL=1 " + isolatedGlsl(id, out), trustedExe(),
-                    joined(args, {"--replay-exercises", calls.string()}));
+  return runAppJson(out, "WB_STRICT_GL=1 " + isolatedGlsl(id, out), trustedExe(), withOthers(id, out, args, calls));
 }
 
 // The exercise whose GLSL a compile error ("path/shaders/exercise.glsl:13: error: ...") is in, or "".
@@ -568,13 +610,6 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
   msg << "\n  diff: " << (out / "diff.png").string()
       << " (red: shadowed where the reference is lit; blue: lit where it is shadowed)"
       << "\n  reference: " << (out / "reference.png").string() << "\n  result: " << (out / "result.png").string();
-  const std::vector<std::string> uses = varySeed() < 0 ? exerciseUses(id) : std::vector<std::string>{};
-  if (!uses.empty()) {  // check: the golden was drawn with the reference's inputs
-    msg << "\n  this scene runs " << id << " on what your";
-    for (const std::string& u : uses) msg << " " << u;
-    msg << " returned: if any of those fails its own tests, fix it first (the grader judges " << id
-        << " on your inputs against the reference run on the same inputs; this check has only the golden)";
-  }
   FAIL() << msg.str();
 }
 

@@ -1,0 +1,36 @@
+/// @file exercise_chunks.hpp
+/// An exercise shader file is cut into chunks by its markers: "// EXERCISE 09.2" starts exercise
+/// 09.2's chunk, which runs to the next marker or the end; the text above the first marker (shared
+/// helpers) is the chunk "". Isolation swaps other exercises' chunks for the solution's
+/// (glsl_harness.hpp); hot reload swaps a chunk that no longer compiles for its last good text
+/// (shader.hpp). Only text here: no GL.
+#pragma once
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace wb {
+
+/// Where exercise `id`'s marker "// EXERCISE <id>" is in `text`: the exact id, followed by a space,
+/// a colon or the line's end (so "// EXERCISE 01" is not 01.3's marker), or npos.
+size_t findMarker(const std::string& text, const std::string& id);
+
+/// [begin, end) of the chunk of `id`: from the start of its marker's line to the start of the next
+/// marker's line, or the end. Throws wb::Error when `text` has no marker for `id`.
+std::pair<size_t, size_t> chunkRange(const std::string& text, const std::string& id);
+
+/// The chunks of `text` in order, as (id, text): the preamble "" first (when not empty), then one
+/// per marker. Joined, they are `text` again.
+std::vector<std::pair<std::string, std::string>> splitChunks(const std::string& text);
+
+/// The ids (the preamble "" included) whose chunk differs between `before` and `after`, or that
+/// only one of them has.
+std::set<std::string> changedChunks(const std::string& before, const std::string& after);
+
+/// `current` with the chunks of `ids` taken from `lastGood` (where it has them), and #line lines
+/// (source kThisFileSource, shader.hpp) so that every other chunk keeps its line numbers in the
+/// compiler's messages.
+std::string withChunksFrom(const std::string& current, const std::string& lastGood, const std::set<std::string>& ids);
+
+}  // namespace wb
