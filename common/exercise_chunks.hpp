@@ -28,7 +28,7 @@ std::vector<std::pair<std::string, std::string>> splitChunks(const std::string& 
 /// only one of them has.
 std::set<std::string> changedChunks(const std::string& before, const std::string& after);
 
-/// `current` with the chunks of `ids` taken from `lastGood` (where it has them), and #line lines
+/// `current` with the chunks of `ids` taken from `lastGood` (where it has them), and `#line` directives
 /// (source kThisFileSource, shader.hpp) so that every other chunk keeps its line numbers in the
 /// compiler's messages.
 std::string withChunksFrom(const std::string& current, const std::string& lastGood, const std::set<std::string>& ids);

@@ -206,7 +206,9 @@ std::string IsolatedShaders::text(const std::string& file) const { return readFi
 // The environment that makes an app use `id`'s isolated GLSL (the submission's chunk of a GLSL
 // exercise and the solution's other chunks; all solution for a C++ exercise), written into `out`.
 static std::string isolatedGlsl(const std::string& id, const fs::path& out) {
-  if (*variant::kSolutionDir == '\0' || updatingGolden()) return "";
+  if (updatingGolden()) return "";
+  // (Without the solution, isolatedExerciseSource() is the submission's whole file: the files the
+  // student edition's app reads anyway, and a submission's when WB_SUBMISSION_DIR names one.)
   for (const std::string& file : glslExerciseFiles())  // exercise.glsl, and a stage file such as a .geom
     std::ofstream(out / file) << isolatedExerciseSource(file, id);
   return "WB_SHADER_OVERLAY=" + quote(out.string()) + " ";
@@ -598,10 +600,15 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
   writePng(out / "diff.png", 2 * ref.width, 2 * ref.height,
            doubled(diffImage(ref, got, tolerance), ref.width, ref.height));
   std::ostringstream msg;
-  if (todo) {
+  std::string stubs;  // the other exercises that are not implemented in this run
+  for (const auto& [other, state] : run.exerciseStates)
+    if (state == "not_implemented" && other != id) stubs += (stubs.empty() ? "" : ", ") + other;
+  if (todo && !stubs.empty()) {  // (runIsolated() already failed an exercise that is a stub itself)
+    msg << "ERROR: blocked by " << stubs << ": " << todo << " pixels of scene '" << name << "' show the "
+        << "not-implemented placeholder (stripes) of " << stubs << ", which this scene draws with yours: "
+        << "implement " << stubs << " first (the grader draws it with the reference)";
+  } else if (todo) {
     msg << "NOT IMPLEMENTED: " << todo << " pixels of scene '" << name << "' show the not-implemented placeholder";
-    for (const auto& [other, state] : run.exerciseStates)
-      if (state == "not_implemented") msg << "\n  exercise " << other << " is not implemented yet";
   } else {
     char pct[64];
     std::snprintf(pct, sizeof pct, "%.2f%% of pixels (allowed %.2f%%)", 100 * fraction, 100 * maxFailingFraction);

@@ -9,6 +9,8 @@
 //                    recordRequestedRuns in harness.hpp)
 //   --signatures F   like --check, and write each failing test's value to F (JSON lines), from
 //                    which tools/make_hints.py records the values the mutants' mistakes give
+//   --as-student-edition  run as the student edition does, without the solution's app and shaders
+//                    (tests of check's verdicts there: tests/framework/CMakeLists.txt)
 //   --judge DIR      replay the tape in DIR instead of running any exercise, and decide
 //                    (see tape.hpp: the grader runs the student's build as the runner and the
 //                    solution's as the judge; `./workbook check` runs both the same way)
@@ -84,6 +86,9 @@ class CheckListener : public ::testing::EmptyTestEventListener {
     auto rank = [](const wb::test::Diagnosis& x) {
       return x.verdict == "ERROR" ? 3 : x.verdict == "NOT IMPLEMENTED" ? 1 : 2;
     };
+    // (The grader's convention: a test that draws a scene has Scene or Measured in its name.)
+    if (test_.find("Scene") == std::string::npos && test_.find("Measured") == std::string::npos)
+      ownFailed_.insert(current_);
     if (current_.empty()) {  // a test of the lab as a whole (its files, markers, manifest), not of one exercise
       if (others_.empty() || others_.back().first != test_) others_.emplace_back(test_, std::move(d));
       return;
@@ -98,6 +103,7 @@ class CheckListener : public ::testing::EmptyTestEventListener {
   }
   void OnTestProgramEnd(const ::testing::UnitTest&) override {
     const auto manifest = readManifest();
+    blockWhereNoReference(manifest);
     for (auto& [id, lines] : hints_)
       for (const auto& line : lines)
         if (auto& d = first_[id];
@@ -142,6 +148,28 @@ class CheckListener : public ::testing::EmptyTestEventListener {
   }
 
  private:
+  // Without the solution's shaders (the student edition) a scene draws every GLSL exercise with the
+  // student's own, so when only an exercise's scene tests fail while a GLSL exercise fails its own
+  // tests, the mistake may be that one's: the exercise is blocked by it, never wrong. (The grader
+  // draws the other exercises with the reference, as the instructor edition's check does.)
+  void blockWhereNoReference(const std::vector<ManifestEntry>& manifest) {
+    if (*wb::variant::kSolutionDir) return;
+    for (auto& [id, d] : first_) {
+      if (d.verdict != "WRONG" || ownFailed_.count(id)) continue;
+      std::string by;
+      for (const auto& e : manifest)
+        if (e.id != id && e.file.rfind("shaders/", 0) == 0 && ownFailed_.count(e.id))
+          by += (by.empty() ? "" : ", ") + e.id;
+      if (by.empty()) continue;
+      d.details.insert(d.details.begin(), d.headline);
+      d.verdict = "ERROR";
+      d.headline = "ERROR: blocked by " + by + ": only " + id + "'s scene tests fail, and " + by +
+                   " fails its own tests. Here every scene draws your GLSL exercises as they are (the grader "
+                   "draws the others with the reference): fix " +
+                   by + " first, then check again.";
+    }
+  }
+
   // A mutant of exercise expectMistake must be caught as WRONG, with its own hint or none, never another's:
   // every hint shown names it (alone, or among the "one of these" that give the same value).
   int judgeMutant(const wb::test::Diagnosis& d) const {
@@ -174,7 +202,8 @@ class CheckListener : public ::testing::EmptyTestEventListener {
   std::string current_;        // the exercise of the running test
   std::string test_;           // and the test ("Suite.Name")
   std::map<std::string, wb::test::Diagnosis> first_;
-  std::map<std::string, std::vector<std::string>> hints_;            // the known mistakes each exercise's tests saw
+  std::set<std::string> ownFailed_;                        // the exercises that fail a test that draws no scene
+  std::map<std::string, std::vector<std::string>> hints_;  // the known mistakes each exercise's tests saw
   std::vector<std::pair<std::string, wb::test::Diagnosis>> others_;  // failing tests of no one exercise
 };
 
@@ -232,10 +261,12 @@ int main(int argc, char** argv) {
       check = expectStubs = true;
     else if (!std::strcmp(argv[i], "--update-golden"))
       wb::test::g_updateGolden = true;
+    else if (!std::strcmp(argv[i], "--as-student-edition"))
+      wb::variant::kSolutionDir = wb::variant::kSolutionExe = "";
     else {
       std::fprintf(stderr,
                    "%s: unknown option '%s' (accepted: --check, --expect-stubs, --expect-mistake ID, --expect-hint "
-                   "TEXT, --update-golden, --runner DIR, "
+                   "TEXT, --update-golden, --as-student-edition, --runner DIR, "
                    "--requests F, --judge DIR, --signatures F, --gtest_*)\n",
                    argv[0], argv[i]);
       return 2;
