@@ -2,24 +2,134 @@
 
 #include "common/error.hpp"
 
+#include <algorithm>
+#include <cstdio>
 #include <string>
 
 namespace wb {
+namespace {
+
+// The query that names what is bound to texture `target`.
+GLenum bindingOf(GLenum target) {
+  switch (target) {
+    case GL_TEXTURE_2D:
+      return GL_TEXTURE_BINDING_2D;
+    case GL_TEXTURE_2D_ARRAY:
+      return GL_TEXTURE_BINDING_2D_ARRAY;
+    case GL_TEXTURE_CUBE_MAP:
+      return GL_TEXTURE_BINDING_CUBE_MAP;
+    case GL_TEXTURE_CUBE_MAP_ARRAY:
+      return GL_TEXTURE_BINDING_CUBE_MAP_ARRAY;
+    case GL_TEXTURE_2D_MULTISAMPLE:
+      return GL_TEXTURE_BINDING_2D_MULTISAMPLE;
+    case GL_TEXTURE_3D:
+      return GL_TEXTURE_BINDING_3D;
+    default:
+      throw Error("no texture binding for target " + std::to_string(target));
+  }
+}
+
+// A format and type that glTexImage* accepts, with no data, for `internalFormat`.
+std::pair<GLenum, GLenum> uploadFormatOf(GLenum internalFormat) {
+  switch (internalFormat) {
+    case GL_R8:
+    case GL_R16F:
+    case GL_R32F:
+      return {GL_RED, GL_FLOAT};
+    case GL_RG8:
+    case GL_RG16F:
+    case GL_RG32F:
+      return {GL_RG, GL_FLOAT};
+    case GL_RGB8:
+    case GL_RGB16F:
+    case GL_RGB32F:
+      return {GL_RGB, GL_FLOAT};
+    case GL_RGBA8:
+    case GL_SRGB8_ALPHA8:
+    case GL_RGBA16F:
+    case GL_RGBA32F:
+      return {GL_RGBA, GL_FLOAT};
+    case GL_DEPTH_COMPONENT16:
+    case GL_DEPTH_COMPONENT24:
+    case GL_DEPTH_COMPONENT32F:
+      return {GL_DEPTH_COMPONENT, GL_FLOAT};
+    case GL_DEPTH24_STENCIL8:
+      return {GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8};
+    case GL_DEPTH32F_STENCIL8:
+      return {GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV};
+    default:
+      char hex[16];
+      std::snprintf(hex, sizeof hex, "0x%04X", internalFormat);
+      throw Error(std::string("allocateTexture: internal format ") + hex + " is not one the framework uses");
+  }
+}
+
+}  // namespace
+
+BoundTexture::BoundTexture(GLenum target, GLuint id) : target_(target) {
+  glGetIntegerv(bindingOf(target), &previous_);
+  glBindTexture(target, id);
+}
+BoundTexture::~BoundTexture() { glBindTexture(target_, GLuint(previous_)); }
+
+BoundFramebuffer::BoundFramebuffer(GLuint id) {
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_);
+  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_);
+  glBindFramebuffer(GL_FRAMEBUFFER, id);
+}
+BoundFramebuffer::~BoundFramebuffer() {
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(draw_));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(read_));
+}
+
+BoundVertexArray::BoundVertexArray(GLuint id) {
+  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray_);
+  glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &arrayBuffer_);
+  glBindVertexArray(id);
+}
+BoundVertexArray::~BoundVertexArray() {
+  glBindVertexArray(GLuint(vertexArray_));
+  glBindBuffer(GL_ARRAY_BUFFER, GLuint(arrayBuffer_));
+}
+
+Texture makeTexture(GLenum target) {
+  GLuint id = 0;
+  glGenTextures(1, &id);
+  BoundTexture first(target, id);  // (the first bind makes it a texture of `target`)
+  return Texture(id);
+}
+
+void allocateTexture(GLenum target, int levels, GLenum internalFormat, int w, int h, int layers) {
+  const auto [format, type] = uploadFormatOf(internalFormat);
+  for (int level = 0; level < levels; ++level) {
+    const int lw = std::max(1, w >> level), lh = std::max(1, h >> level);
+    if (target == GL_TEXTURE_2D_ARRAY)
+      glTexImage3D(target, level, GLint(internalFormat), lw, lh, layers, 0, format, type, nullptr);
+    else if (target == GL_TEXTURE_CUBE_MAP)
+      for (GLenum face = 0; face < 6; ++face)
+        glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, level, GLint(internalFormat), lw, lh, 0, format, type,
+                     nullptr);
+    else
+      glTexImage2D(target, level, GLint(internalFormat), lw, lh, 0, format, type, nullptr);
+  }
+  glTexParameteri(target, GL_TEXTURE_BASE_LEVEL, 0);
+  glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, levels - 1);
+}
 
 Texture makeTexture2D(GLenum internalFormat, int w, int h, GLenum filter, GLenum wrap) {
-  GLuint id = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &id);
-  glTextureStorage2D(id, 1, internalFormat, w, h);
-  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, filter);
-  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, filter);
-  glTextureParameteri(id, GL_TEXTURE_WRAP_S, wrap);
-  glTextureParameteri(id, GL_TEXTURE_WRAP_T, wrap);
-  return Texture(id);
+  Texture texture = makeTexture(GL_TEXTURE_2D);
+  BoundTexture edit(GL_TEXTURE_2D, texture.id());
+  allocateTexture(GL_TEXTURE_2D, 1, internalFormat, w, h);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GLint(filter));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GLint(filter));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GLint(wrap));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GLint(wrap));
+  return texture;
 }
 
 Sampler makePlainSampler() {
   GLuint id = 0;
-  glCreateSamplers(1, &id);
+  glGenSamplers(1, &id);
   glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_NONE);
@@ -30,7 +140,7 @@ Sampler makePlainSampler() {
 
 Sampler makeComparisonSampler() {
   GLuint id = 0;
-  glCreateSamplers(1, &id);
+  glGenSamplers(1, &id);
   glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glSamplerParameteri(id, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
   glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -44,14 +154,19 @@ Sampler makeComparisonSampler() {
 
 VertexArray makeEmptyVertexArray() {
   GLuint id = 0;
-  glCreateVertexArrays(1, &id);
+  glGenVertexArrays(1, &id);
+  BoundVertexArray first(id);  // (glGen* names no object until it is first bound)
   return VertexArray(id);
 }
 
-Buffer makeBuffer(size_t bytes, const void* data, GLbitfield flags) {
+Buffer makeBuffer(size_t bytes, const void* data, GLenum usage) {
   GLuint id = 0;
-  glCreateBuffers(1, &id);
-  glNamedBufferStorage(id, GLsizeiptr(bytes), data, flags);
+  glGenBuffers(1, &id);
+  GLint previous = 0;  // (GL_COPY_WRITE_BUFFER: a binding nothing draws with)
+  glGetIntegerv(GL_COPY_WRITE_BUFFER_BINDING, &previous);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, id);
+  glBufferData(GL_COPY_WRITE_BUFFER, GLsizeiptr(bytes), data, usage);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, GLuint(previous));
   return Buffer(id);
 }
 
@@ -67,25 +182,27 @@ bool hasGlExtension(const char* name) {
 
 Framebuffer makeFramebuffer(std::initializer_list<GLuint> colors, GLuint depth) {
   GLuint id = 0;
-  glCreateFramebuffers(1, &id);
+  glGenFramebuffers(1, &id);
   Framebuffer fbo(id);
+  BoundFramebuffer edit(id);
   std::vector<GLenum> buffers;
   for (GLuint c : colors) {
     const GLenum attachment = GL_COLOR_ATTACHMENT0 + GLenum(buffers.size());
-    glNamedFramebufferTexture(id, attachment, c, 0);
+    glFramebufferTexture(GL_FRAMEBUFFER, attachment, c, 0);
     buffers.push_back(attachment);
   }
   if (buffers.empty())
-    glNamedFramebufferDrawBuffer(id, GL_NONE);
+    glDrawBuffer(GL_NONE);
   else
-    glNamedFramebufferDrawBuffers(id, GLsizei(buffers.size()), buffers.data());
+    glDrawBuffers(GLsizei(buffers.size()), buffers.data());
   if (depth) {  // a depth + stencil format attaches to both
-    GLint format = 0;
-    glGetTextureLevelParameteriv(depth, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
-    const bool stencil = format == GL_DEPTH24_STENCIL8 || format == GL_DEPTH32F_STENCIL8;
-    glNamedFramebufferTexture(id, stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, depth, 0);
+    glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, depth, 0);
+    GLint stencilBits = 0;
+    glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE,
+                                          &stencilBits);
+    if (stencilBits > 0) glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, depth, 0);
   }
-  const GLenum status = glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER);
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)
     throw Error("framebuffer incomplete (status 0x" + std::to_string(status) + ")");
   return fbo;

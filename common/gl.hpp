@@ -61,6 +61,51 @@ using ProgramId = GlObject<gldelete::program>;        ///< owns a program object
 using Query = GlObject<gldelete::query>;              ///< owns a query object
 using Sampler = GlObject<gldelete::sampler>;          ///< owns a sampler object
 
+/// OpenGL 4.1 core (macOS's ceiling) has no direct state access: an object is edited while it is
+/// bound. Each of these binds one object for the edits of its scope, then puts back what was bound,
+/// so that code drawing with the bound objects is not disturbed.
+class BoundTexture {
+ public:
+  /// Binds texture `id` to `target` on the active unit.
+  BoundTexture(GLenum target, GLuint id);
+  ~BoundTexture();
+  BoundTexture(const BoundTexture&) = delete;
+  BoundTexture& operator=(const BoundTexture&) = delete;
+
+ private:
+  GLenum target_;
+  GLint previous_ = 0;
+};
+/// Binds a framebuffer for drawing and reading (see BoundTexture).
+class BoundFramebuffer {
+ public:
+  explicit BoundFramebuffer(GLuint id);  ///< binds `id` to GL_FRAMEBUFFER
+  ~BoundFramebuffer();
+  BoundFramebuffer(const BoundFramebuffer&) = delete;
+  BoundFramebuffer& operator=(const BoundFramebuffer&) = delete;
+
+ private:
+  GLint draw_ = 0, read_ = 0;
+};
+/// Binds a vertex array, and puts back the vertex array and GL_ARRAY_BUFFER (see BoundTexture).
+class BoundVertexArray {
+ public:
+  explicit BoundVertexArray(GLuint id);  ///< binds `id`
+  ~BoundVertexArray();
+  BoundVertexArray(const BoundVertexArray&) = delete;
+  BoundVertexArray& operator=(const BoundVertexArray&) = delete;
+
+ private:
+  GLint vertexArray_ = 0, arrayBuffer_ = 0;
+};
+
+/// Creates a texture object of `target` (GL_TEXTURE_2D, GL_TEXTURE_2D_ARRAY, GL_TEXTURE_CUBE_MAP, ...).
+Texture makeTexture(GLenum target);
+/// Gives the texture bound to `target` `levels` levels of `internalFormat`, w x h at level 0 (each
+/// face of a cube map; `layers` layers of an array), with no data, and no levels beyond them.
+/// Throws wb::Error for a format this framework does not use.
+void allocateTexture(GLenum target, int levels, GLenum internalFormat, int w, int h, int layers = 1);
+
 /// Creates a 2D texture with storage (one level) and the given filter and wrap modes.
 Texture makeTexture2D(GLenum internalFormat, int w, int h, GLenum filter = GL_NEAREST, GLenum wrap = GL_CLAMP_TO_EDGE);
 /// Creates a sampler that reads texels as stored: nearest filtering, clamped to the edge, no depth
@@ -71,8 +116,9 @@ Sampler makePlainSampler();
 Sampler makeComparisonSampler();
 /// Creates an empty vertex array (for draws whose vertex shader makes its own vertices).
 VertexArray makeEmptyVertexArray();
-/// Creates a buffer with `bytes` of immutable storage, optionally filled from `data`.
-Buffer makeBuffer(size_t bytes, const void* data, GLbitfield flags = GL_DYNAMIC_STORAGE_BIT);
+/// Creates a buffer with `bytes` of storage, optionally filled from `data`; `usage` is glBufferData's
+/// hint (GL_STATIC_DRAW for data written once).
+Buffer makeBuffer(size_t bytes, const void* data, GLenum usage = GL_DYNAMIC_DRAW);
 /// Creates a framebuffer with the given color attachments and optional depth (or depth + stencil,
 /// by the texture's format) attachment; throws
 /// wb::Error if it is incomplete.

@@ -218,8 +218,8 @@ std::vector<glm::vec4> runGlslKernelWithSamplers(const std::string& functions, c
 
   std::vector<glm::vec4> padded = inputs;
   padded.resize(std::max<size_t>(inputs.size(), 1));
-  Buffer in = makeBuffer(padded.size() * sizeof(glm::vec4), padded.data(), 0);
-  Buffer out = makeBuffer(size_t(std::max(count, 1)) * sizeof(glm::vec4), nullptr, GL_MAP_READ_BIT);
+  Buffer in = makeBuffer(padded.size() * sizeof(glm::vec4), padded.data(), GL_STATIC_DRAW);
+  Buffer out = makeBuffer(size_t(std::max(count, 1)) * sizeof(glm::vec4), nullptr, GL_DYNAMIC_READ);
   glUseProgram(prog.id());
   glProgramUniform1i(prog.id(), glGetUniformLocation(prog.id(), "wb_count"), count);
   for (size_t t = 0; t < textures.size(); ++t) {

@@ -216,19 +216,19 @@ MeshData makeTreeCanopy() {
 }
 
 Mesh::Mesh(const MeshData& d) {
-  GLuint vao = 0;
-  glCreateVertexArrays(1, &vao);
-  vao_ = VertexArray(vao);
-  vbo_ = makeBuffer(d.vertices.size() * sizeof(Vertex), d.vertices.data(), 0);
-  ibo_ = makeBuffer(d.indices.size() * sizeof(uint32_t), d.indices.data(), 0);
-  glVertexArrayVertexBuffer(vao, 0, vbo_.id(), 0, sizeof(Vertex));
-  glVertexArrayElementBuffer(vao, ibo_.id());
-  const GLuint offsets[3] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, uv)};
-  const GLint sizes[3] = {3, 3, 2};
-  for (GLuint a = 0; a < 3; ++a) {
-    glEnableVertexArrayAttrib(vao, a);
-    glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
-    glVertexArrayAttribBinding(vao, a, 0);
+  vao_ = makeEmptyVertexArray();
+  vbo_ = makeBuffer(d.vertices.size() * sizeof(Vertex), d.vertices.data(), GL_STATIC_DRAW);
+  ibo_ = makeBuffer(d.indices.size() * sizeof(uint32_t), d.indices.data(), GL_STATIC_DRAW);
+  {
+    BoundVertexArray edit(vao_.id());
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_.id());
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo_.id());  // (part of the vertex array's state)
+    const size_t offsets[3] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, uv)};
+    const GLint sizes[3] = {3, 3, 2};
+    for (GLuint a = 0; a < 3; ++a) {
+      glEnableVertexAttribArray(a);
+      glVertexAttribPointer(a, sizes[a], GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<const void*>(offsets[a]));
+    }
   }
   count_ = static_cast<GLsizei>(d.indices.size());
   if (d.isWelded()) {
@@ -246,17 +246,15 @@ void Mesh::draw(int instances) const {
 }
 
 void Mesh::uploadWelded(const MeshData& d) {
-  GLuint vao = 0;
-  glCreateVertexArrays(1, &vao);
-  weldedVao_ = VertexArray(vao);
+  weldedVao_ = makeEmptyVertexArray();
   weldedPositions_ = static_cast<uint32_t>(d.weldedPositions.size());
   if (weldedPositions_ > 0) {
-    weldedVbo_ = makeBuffer(d.weldedPositions.size() * sizeof(glm::vec3), d.weldedPositions.data(), 0);
-    glVertexArrayVertexBuffer(vao, 0, weldedVbo_.id(), 0, sizeof(glm::vec3));
+    weldedVbo_ = makeBuffer(d.weldedPositions.size() * sizeof(glm::vec3), d.weldedPositions.data(), GL_STATIC_DRAW);
+    BoundVertexArray edit(weldedVao_.id());
+    glBindBuffer(GL_ARRAY_BUFFER, weldedVbo_.id());
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
   }
-  glEnableVertexArrayAttrib(vao, 0);
-  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
-  glVertexArrayAttribBinding(vao, 0, 0);
   setWeldedIndices(d.weldedIndices, GL_TRIANGLES);
 }
 
@@ -290,8 +288,10 @@ void Mesh::setWeldedIndices(const std::vector<uint32_t>& indices, GLenum mode) {
     if (indices[k] >= weldedPositions_)
       throw Error("welded index " + std::to_string(k) + " is " + std::to_string(indices[k]) + ", but the mesh has " +
                   std::to_string(weldedPositions_) + " welded positions");
-  weldedIbo_ = indices.empty() ? Buffer() : makeBuffer(indices.size() * sizeof(uint32_t), indices.data(), 0);
-  glVertexArrayElementBuffer(weldedVao_.id(), weldedIbo_.id());
+  weldedIbo_ =
+      indices.empty() ? Buffer() : makeBuffer(indices.size() * sizeof(uint32_t), indices.data(), GL_STATIC_DRAW);
+  BoundVertexArray edit(weldedVao_.id());
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, weldedIbo_.id());  // (part of the vertex array's state)
   weldedCount_ = static_cast<GLsizei>(indices.size());
   weldedMode_ = mode;
 }

@@ -13,33 +13,41 @@ namespace {
 // A depth texture of any shape: nearest filtering (graded paths use explicit taps) and a border of
 // depth 1, so a lookup outside the map reads "nothing blocks the light".
 Texture makeDepthTexture(GLenum target, int size, int layers) {
-  GLuint id = 0;
-  glCreateTextures(target, 1, &id);
-  if (target == GL_TEXTURE_2D_ARRAY)
-    glTextureStorage3D(id, 1, GL_DEPTH_COMPONENT32F, size, size, layers);
-  else
-    glTextureStorage2D(id, 1, GL_DEPTH_COMPONENT32F, size, size);
-  const GLenum wrap = target == GL_TEXTURE_CUBE_MAP ? GL_CLAMP_TO_EDGE : GL_CLAMP_TO_BORDER;
-  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  for (GLenum axis : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) glTextureParameteri(id, axis, wrap);
+  Texture texture = makeTexture(target);
+  BoundTexture edit(target, texture.id());
+  allocateTexture(target, 1, GL_DEPTH_COMPONENT32F, size, size, layers);
+  const GLint wrap = target == GL_TEXTURE_CUBE_MAP ? GL_CLAMP_TO_EDGE : GL_CLAMP_TO_BORDER;
+  glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  for (GLenum axis : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) glTexParameteri(target, axis, wrap);
   const float outside[4] = {1, 1, 1, 1};
-  glTextureParameterfv(id, GL_TEXTURE_BORDER_COLOR, outside);
-  return Texture(id);
+  glTexParameterfv(target, GL_TEXTURE_BORDER_COLOR, outside);
+  return texture;
+}
+
+// Attaches one layer (face) of `texture` as the bound framebuffer's depth. (GL 4.1 attaches a cube
+// map's face as a 2D image: glFramebufferTextureLayer takes cube maps from 4.5 on.)
+void attachDepthLayer(GLenum target, GLuint texture, int layer) {
+  if (target == GL_TEXTURE_CUBE_MAP)
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(layer), texture,
+                           0);
+  else
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture, 0, layer);
 }
 
 // A depth-only framebuffer on one layer (face) of `texture`, or on all of them when layer < 0.
-Framebuffer depthFramebuffer(GLuint texture, int layer) {
+Framebuffer depthFramebuffer(GLenum target, GLuint texture, int layer) {
   GLuint id = 0;
-  glCreateFramebuffers(1, &id);
+  glGenFramebuffers(1, &id);
   Framebuffer fbo(id);
-  glNamedFramebufferDrawBuffer(id, GL_NONE);
-  glNamedFramebufferReadBuffer(id, GL_NONE);
+  BoundFramebuffer edit(id);
+  glDrawBuffer(GL_NONE);
+  glReadBuffer(GL_NONE);
   if (layer < 0)
-    glNamedFramebufferTexture(id, GL_DEPTH_ATTACHMENT, texture, 0);
+    glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture, 0);
   else
-    glNamedFramebufferTextureLayer(id, GL_DEPTH_ATTACHMENT, texture, 0, layer);
-  const GLenum status = glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER);
+    attachDepthLayer(target, texture, layer);
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)
     throw Error("shadow map framebuffer incomplete (0x" + std::to_string(status) + ")");
   return fbo;
@@ -60,7 +68,7 @@ void ShadowMap::resize(int size) {
   if (size == size_ && texture_.id()) return;
   size_ = size;
   texture_ = makeDepthTexture(GL_TEXTURE_2D, size, 1);
-  fbo_ = depthFramebuffer(texture_.id(), -1);
+  fbo_ = depthFramebuffer(GL_TEXTURE_2D, texture_.id(), -1);
 }
 
 void ShadowMap::begin() const { bindAndClear(fbo_, size_); }
@@ -75,13 +83,14 @@ void CubeShadowMap::resize(int size) {
   if (size == size_ && texture_.id()) return;
   size_ = size;
   texture_ = makeDepthTexture(GL_TEXTURE_CUBE_MAP, size, 6);
-  layeredFbo_ = depthFramebuffer(texture_.id(), -1);
-  fbo_ = depthFramebuffer(texture_.id(), 0);
+  layeredFbo_ = depthFramebuffer(GL_TEXTURE_CUBE_MAP, texture_.id(), -1);
+  fbo_ = depthFramebuffer(GL_TEXTURE_CUBE_MAP, texture_.id(), 0);
 }
 
 void CubeShadowMap::begin(int face) const {
   if (face < 0 || face > 5) throw Error("CubeShadowMap::begin: face " + std::to_string(face) + " is not in 0..5");
-  glNamedFramebufferTextureLayer(fbo_.id(), GL_DEPTH_ATTACHMENT, texture_.id(), 0, face);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  attachDepthLayer(GL_TEXTURE_CUBE_MAP, texture_.id(), face);
   bindAndClear(fbo_, size_);
 }
 
@@ -101,8 +110,8 @@ void ShadowMapArray::resize(int size, int layers) {
   size_ = size, layers_ = layers;
   texture_ = makeDepthTexture(GL_TEXTURE_2D_ARRAY, size, layers);
   fbos_.clear();
-  for (int k = 0; k < layers; ++k) fbos_.push_back(depthFramebuffer(texture_.id(), k));
-  layeredFbo_ = depthFramebuffer(texture_.id(), -1);
+  for (int k = 0; k < layers; ++k) fbos_.push_back(depthFramebuffer(GL_TEXTURE_2D_ARRAY, texture_.id(), k));
+  layeredFbo_ = depthFramebuffer(GL_TEXTURE_2D_ARRAY, texture_.id(), -1);
 }
 
 void ShadowMapArray::begin(int layer) const {
