@@ -271,7 +271,7 @@ MeasureResult App::measureNow(bool report) {
   const glm::ivec2 size = target_.size();
   if (imgui_) {
     heatmap_ = makeTexture2D(GL_RGBA8, size.x, size.y);
-    glTextureSubImage2D(heatmap_.id(), 0, 0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, r.heatmap.data());
+    uploadTexture2D(heatmap_.id(), 0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, r.heatmap.data());
     shell_.showHeatmap = true;
   }
   say(r.text);

@@ -28,7 +28,7 @@ void App::loadPicture() {
   unsigned char* px = stbi_load(file.string().c_str(), &w, &h, &n, 4);
   if (!px) return;  // (a missing or broken picture only leaves the panel without it)
   picture_ = makeTexture2D(GL_RGBA8, w, h, GL_LINEAR);
-  glTextureSubImage2D(picture_.id(), 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  uploadTexture2D(picture_.id(), 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, px);
   stbi_image_free(px);
   pictureSize_ = {w, h};
 }

@@ -77,7 +77,7 @@ void DebugViews::drawInset(const LightView& light, glm::ivec2 frame) const {
   glActiveTexture(GL_TEXTURE0);
   glGetIntegerv(GL_SAMPLER_BINDING, &labSampler);
   glBindSampler(0, plain_.id());
-  glBindTextureUnit(0, light.texture);
+  bindTexture(0, light.texture);
   const bool perspective = light.light.type != LightType::Directional;
   if (light.target == GL_TEXTURE_CUBE_MAP) {
     const int cell = std::max(8, std::min(frame.y / 7, (frame.x / 2 - 8) / 4));
@@ -113,7 +113,7 @@ void DebugViews::drawHeatmap(GLuint heatmap, glm::ivec2 frame) const {
   glEnablei(GL_BLEND, 0);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   overlay_.use();
-  glBindTextureUnit(0, heatmap);
+  bindTexture(0, heatmap);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glDisablei(GL_BLEND, 0);
   glEnable(GL_DEPTH_TEST);

@@ -75,10 +75,11 @@ void ExerciseBoard::probe() {
   }
   // Probes may read wb_tex0 (a 2D texture) and wb_tex1 (a cube map, for lab 08's lookups).
   Texture dummy = makeTexture2D(GL_R32F, 1, 1);
-  GLuint cubeId = 0;
-  glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &cubeId);
-  Texture cube(cubeId);
-  glTextureStorage2D(cube.id(), 1, GL_R32F, 1, 1);
+  Texture cube = makeTexture(GL_TEXTURE_CUBE_MAP);
+  {
+    BoundTexture edit(GL_TEXTURE_CUBE_MAP, cube.id());
+    allocateTexture(GL_TEXTURE_CUBE_MAP, 1, GL_R32F, 1, 1);
+  }
   for (const auto& [file, probes] : byFile) {
     std::string body;
     for (size_t k = 0; k < probes.size(); ++k)
@@ -86,10 +87,28 @@ void ExerciseBoard::probe() {
     try {
       const fs::path path = findShaderFile(file, shaderSearchPath());
       probedFiles_[path] = fs::last_write_time(path);
-      auto r = runGlslKernel(readFile(path), path, body, int(probes.size()), 1, {}, {dummy.id(), cube.id()});
+      const std::string text = readFile(path);
+      std::string broken, error;  // the exercise whose chunk does not compile, and why
+      auto run = [&](const std::string& t) {
+        return runGlslKernel(t, path, body, int(probes.size()), 1, {}, {dummy.id(), cube.id()});
+      };
+      std::vector<glm::vec4> r;
+      try {
+        r = run(text);
+        lastGood_[path] = text;
+      } catch (const Error& e) {
+        // One exercise's chunk that does not compile is that exercise's error alone: the others are
+        // probed with its last good chunk in its place, as hot reload draws them (shader.hpp).
+        broken = glslErrorOwner(e.what()), error = e.what();
+        if (broken.empty() || !lastGood_.count(path)) throw;
+        r = run(withChunksFrom(text, lastGood_[path], {broken}));
+      }
       for (size_t k = 0; k < probes.size(); ++k)
-        set(probes[k]->id, isTodo(r[k].x) ? ExerciseState::NotImplemented : ExerciseState::Implemented,
-            isTodo(r[k].x) ? "the GLSL function still returns WB_TODO" : "");
+        if (probes[k]->id == broken)
+          set(broken, ExerciseState::Failed, error);
+        else
+          set(probes[k]->id, isTodo(r[k].x) ? ExerciseState::NotImplemented : ExerciseState::Implemented,
+              isTodo(r[k].x) ? "the GLSL function still returns WB_TODO" : "");
     } catch (const Error& e) {
       for (const auto* p : probes) set(p->id, ExerciseState::Failed, e.what());
     }

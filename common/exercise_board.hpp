@@ -77,6 +77,7 @@ class ExerciseBoard {
   std::vector<ExerciseStatus> exercises_;
   std::vector<Probe> probes_;
   std::map<std::filesystem::path, std::filesystem::file_time_type> probedFiles_;
+  std::map<std::filesystem::path, std::string> lastGood_;  // each probed file's text at its last compile
 };
 
 }  // namespace wb

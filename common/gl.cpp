@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <map>
 #include <string>
 
 namespace wb {
@@ -92,11 +93,35 @@ BoundVertexArray::~BoundVertexArray() {
   glBindBuffer(GL_ARRAY_BUFFER, GLuint(arrayBuffer_));
 }
 
+// The target of every texture makeTexture() made (a name GL reuses after a delete is made again).
+static std::map<GLuint, GLenum>& textureTargets() {
+  static std::map<GLuint, GLenum> targets;
+  return targets;
+}
+
 Texture makeTexture(GLenum target) {
   GLuint id = 0;
   glGenTextures(1, &id);
   BoundTexture first(target, id);  // (the first bind makes it a texture of `target`)
+  textureTargets()[id] = target;
   return Texture(id);
+}
+
+GLenum textureTarget(GLuint id) {
+  const auto t = textureTargets().find(id);
+  if (t == textureTargets().end())
+    throw Error("texture " + std::to_string(id) + " was not made by wb::makeTexture: its target is unknown");
+  return t->second;
+}
+
+void bindTexture(GLuint unit, GLuint id) {
+  glActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(id ? textureTarget(id) : GL_TEXTURE_2D, id);
+}
+
+void uploadTexture2D(GLuint id, int x, int y, int w, int h, GLenum format, GLenum type, const void* data) {
+  BoundTexture edit(GL_TEXTURE_2D, id);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, x, y, w, h, format, type, data);
 }
 
 void allocateTexture(GLenum target, int levels, GLenum internalFormat, int w, int h, int layers) {

@@ -99,8 +99,16 @@ class BoundVertexArray {
   GLint vertexArray_ = 0, arrayBuffer_ = 0;
 };
 
-/// Creates a texture object of `target` (GL_TEXTURE_2D, GL_TEXTURE_2D_ARRAY, GL_TEXTURE_CUBE_MAP, ...).
+/// Creates a texture object of `target` (GL_TEXTURE_2D, GL_TEXTURE_2D_ARRAY, GL_TEXTURE_CUBE_MAP, ...),
+/// and remembers its target for bindTexture().
 Texture makeTexture(GLenum target);
+/// The target a texture made by makeTexture() has; throws wb::Error for another name.
+GLenum textureTarget(GLuint id);
+/// Binds texture `id` (made by makeTexture(), or 0) to texture unit `unit`, which becomes the active
+/// one: glBindTextureUnit, which GL 4.1 lacks.
+void bindTexture(GLuint unit, GLuint id);
+/// Writes a w x h rectangle at (x, y) of level 0 of 2D texture `id` from `data` (glTexSubImage2D).
+void uploadTexture2D(GLuint id, int x, int y, int w, int h, GLenum format, GLenum type, const void* data);
 /// Gives the texture bound to `target` `levels` levels of `internalFormat`, w x h at level 0 (each
 /// face of a cube map; `layers` layers of an array), with no data, and no levels beyond them.
 /// Throws wb::Error for a format this framework does not use.

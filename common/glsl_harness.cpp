@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -129,6 +130,13 @@ std::string exerciseAtLine(const std::string& file, int line) {
     if (markerLine > 0 && markerLine <= line && markerLine > ownerLine) owner = id, ownerLine = markerLine;
   }
   return owner;
+}
+
+std::string glslErrorOwner(const std::string& message) {
+  static const std::regex where(R"(([^\s:]+):(\d+): error)");
+  std::smatch m;
+  if (!std::regex_search(message, m, where)) return "";
+  return exerciseAtLine(fs::path(m[1].str()).filename().string(), std::stoi(m[2].str()));
 }
 
 fs::path submittedShaderFile(const std::string& file) {

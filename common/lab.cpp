@@ -183,7 +183,7 @@ void Lab::beginCameraPass(const Program& program, const Light& light, const glm:
   program.set("u_lightViewProj", lightViewProj);
   program.set("u_alphaCutoff", alphaCutoff_);
   program.set("u_shadowMap", 0);
-  glBindTextureUnit(0, shadowMap);
+  bindTexture(0, shadowMap);
 }
 
 }  // namespace wb

@@ -41,8 +41,9 @@ std::vector<float> PcfReference::render(GLuint positions, int width, int height,
   }
   GLint size[2] = {0, 0};
   if (target_.id()) {
-    glGetTextureLevelParameteriv(target_.id(), 0, GL_TEXTURE_WIDTH, &size[0]);
-    glGetTextureLevelParameteriv(target_.id(), 0, GL_TEXTURE_HEIGHT, &size[1]);
+    BoundTexture ask(GL_TEXTURE_2D, target_.id());
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &size[0]);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &size[1]);
   }
   if (size[0] != width || size[1] != height) {
     target_ = makeTexture2D(GL_R32F, width, height);
@@ -63,8 +64,8 @@ std::vector<float> PcfReference::render(GLuint positions, int width, int height,
   program_->set("u_bias", biasTexels * texelWorld * 0.5f * glm::length(depthRow));
   program_->set("u_radius", kernel / 2);
   glProgramUniform1fv(program_->id(), glGetUniformLocation(program_->id(), "u_weights"), 8, weights);
-  glBindTextureUnit(0, positions);
-  glBindTextureUnit(1, depthMap);
+  bindTexture(0, positions);
+  bindTexture(1, depthMap);
   glBindSampler(1, sampler_.id());
   glBindVertexArray(vao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -89,14 +90,13 @@ void FilteredShadowMapArray::resize(int size, int layers, GLenum format) {
   if (size == size_ && format == format_ && layers == int(layers_.size()) && array_.id()) return;
   layers_.resize(size_t(layers));
   size_ = size, format_ = format;
-  GLuint id = 0;
-  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
-  array_ = Texture(id);
-  glTextureStorage3D(id, 1, format, size, size, layers);
-  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  array_ = makeTexture(GL_TEXTURE_2D_ARRAY);
+  BoundTexture edit(GL_TEXTURE_2D_ARRAY, array_.id());
+  allocateTexture(GL_TEXTURE_2D_ARRAY, 1, format, size, size, layers);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
 void FilteredShadowMapArray::copy(int k) const {
@@ -111,28 +111,26 @@ void FilteredShadowMap::resize(int size, const PrefilterOptions& o) {
   if (same) return;
   size_ = size;
   const int levels = o.mipmaps ? 1 + int(std::log2(size)) : 1;
-  GLuint ids[2] = {0, 0};
-  glCreateTextures(GL_TEXTURE_2D, 2, ids);
-  color_ = Texture(ids[0]);
-  scratch_ = Texture(ids[1]);
-  glTextureStorage2D(ids[0], levels, o.format, size, size);
-  glTextureStorage2D(ids[1], 1, o.format, size, size);
-  for (GLuint id : ids) {
-    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, id == ids[0] && o.mipmaps ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
-    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  color_ = makeTexture(GL_TEXTURE_2D);
+  scratch_ = makeTexture(GL_TEXTURE_2D);
+  // Anisotropic filtering is an extension before 4.6 (everywhere in practice, macOS included).
+  static const bool anisotropic =
+      hasGlExtension("GL_ARB_texture_filter_anisotropic") || hasGlExtension("GL_EXT_texture_filter_anisotropic");
+  for (const Texture* t : {&color_, &scratch_}) {
+    BoundTexture edit(GL_TEXTURE_2D, t->id());
+    const bool mipmapped = t == &color_ && o.mipmaps;
+    allocateTexture(GL_TEXTURE_2D, mipmapped ? levels : 1, o.format, size, size);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, mipmapped ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    if (mipmapped && anisotropic) glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY, 8.0f);
   }
-  if (o.mipmaps) glTextureParameterf(ids[0], GL_TEXTURE_MAX_ANISOTROPY, 8.0f);
   depth_ = makeTexture2D(GL_DEPTH_COMPONENT32F, size, size);
   fbo_ = makeFramebuffer({color_.id()}, depth_.id());
   scratchFbo_ = makeFramebuffer({scratch_.id()}, 0);
   backFbo_ = makeFramebuffer({color_.id()}, 0);
-  if (!vao_.id()) {
-    GLuint vao = 0;
-    glCreateVertexArrays(1, &vao);
-    vao_ = VertexArray(vao);
-  }
+  if (!vao_.id()) vao_ = makeEmptyVertexArray();
 }
 
 void FilteredShadowMap::begin(const float clear[4]) const {
@@ -194,7 +192,7 @@ void FilteredShadowMap::prefilter(const Program& blur) {
     const GLuint fbo[2] = {scratchFbo_.id(), backFbo_.id()};
     for (int pass = 0; pass < 2; ++pass) {
       glProgramUniform2i(p.id(), glGetUniformLocation(p.id(), "u_axis"), pass == 0, pass == 1);
-      glBindTextureUnit(0, from[pass]);
+      bindTexture(0, from[pass]);
       if (compute) {
         glBindImageTexture(0, to[pass], 0, GL_FALSE, 0, GL_WRITE_ONLY, options_.format);
         glDispatchCompute(GLuint(size_ + 7) / 8, GLuint(size_ + 7) / 8, 1);
@@ -206,7 +204,10 @@ void FilteredShadowMap::prefilter(const Program& blur) {
     }
     if (!compute) glEnable(GL_DEPTH_TEST);
   }
-  if (options_.mipmaps) glGenerateTextureMipmap(color_.id());
+  if (options_.mipmaps) {
+    BoundTexture edit(GL_TEXTURE_2D, color_.id());
+    glGenerateMipmap(GL_TEXTURE_2D);
+  }
 }
 
 }  // namespace wb

@@ -238,7 +238,7 @@ void varyScene(Scene& scene, uint32_t seed) {
 GpuScene::GpuScene(const Scene& scene) {
   const uint8_t whiteTexel[4] = {255, 255, 255, 255};
   white_ = makeTexture2D(GL_RGBA8, 1, 1);
-  glTextureSubImage2D(white_.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, whiteTexel);
+  uploadTexture2D(white_.id(), 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, whiteTexel);
   std::map<fs::path, GLuint> loaded;
   for (const auto& o : scene.objects) {
     GLuint tex = white_.id();
@@ -251,16 +251,18 @@ GpuScene::GpuScene(const Scene& scene) {
         if (!px)
           throw UsageError(scene.path.string() + ": " + o.name + ": cannot load texture '" +
                            o.material.texture.string() + "': " + stbi_failure_reason());
-        GLuint id = 0;
-        glCreateTextures(GL_TEXTURE_2D, 1, &id);
-        const int levels = 1 + static_cast<int>(std::log2(std::max(w, h)));
-        glTextureStorage2D(id, levels, GL_RGBA8, w, h);
-        glTextureSubImage2D(id, 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, px);
-        glGenerateTextureMipmap(id);
-        glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-        glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        Texture texture = makeTexture(GL_TEXTURE_2D);
+        const GLuint id = texture.id();
+        {
+          BoundTexture edit(GL_TEXTURE_2D, id);
+          allocateTexture(GL_TEXTURE_2D, 1 + static_cast<int>(std::log2(std::max(w, h))), GL_RGBA8, w, h);
+          glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, px);
+          glGenerateMipmap(GL_TEXTURE_2D);
+          glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+          glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        }
         stbi_image_free(px);
-        textures_.emplace_back(id);
+        textures_.push_back(std::move(texture));
         it = loaded.emplace(o.material.texture, id).first;
       }
       tex = it->second;
@@ -285,7 +287,7 @@ void GpuScene::drawItems(const Program& program, int unit, int instances, bool c
     program.set("u_model", it.model);
     program.set("u_color", it.color);
     program.set("u_hasTexture", it.textured ? 1 : 0);
-    glBindTextureUnit(unit, it.texture);
+    bindTexture(GLuint(unit), it.texture);
     it.mesh.draw(instances);
   }
 }

@@ -56,7 +56,7 @@ class PcfLab : public wb::Lab {
     auto timer = timePass("lighting");
     const wb::Program& p = *scenePrograms[method];
     beginCameraPass(p, light, lightViewProj, shadowMap.texture());
-    glBindTextureUnit(1, shadowMap.texture());
+    wb::bindTexture(1, shadowMap.texture());
     glBindSampler(1, compareSampler.id());
     p.set("u_bias", depthBias());
     p.set("u_radius", kernel);

@@ -64,7 +64,7 @@ class EsmLab : public wb::Lab {
     auto timer = timePass("lighting");
     const wb::Program& p = *sceneProgram;
     beginCameraPass(p, light, lightViewProj, map.texture());
-    glBindTextureUnit(1, map.depthTexture());
+    wb::bindTexture(1, map.depthTexture());
     p.set("u_depthMap", 1);
     p.set("u_c", cUsed);
     p.set("u_logSpace", logSpace ? 1 : 0);

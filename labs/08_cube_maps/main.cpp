@@ -80,7 +80,7 @@ class CubeLab : public wb::Lab {
     auto timer = timePass("lighting");
     const wb::Program& p = *scenePrograms[filter];
     beginCameraPass(p, light, faces[0], 0);
-    glBindTextureUnit(1, cube.texture());
+    wb::bindTexture(1, cube.texture());
     p.set("u_lightPos", light.position);
     p.set("u_far", nearFar.y);
     p.set("u_bias", depthBias());

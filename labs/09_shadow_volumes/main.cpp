@@ -164,10 +164,10 @@ class VolumeLab : public wb::Lab {
       const wb::FloatImage v = wb::rayTracedVisibility(*rays, light, glm::inverse(viewProj()), size.x, size.y, threads);
       if (traced.id() == 0 || tracedSize != size)
         traced = wb::makeTexture2D(GL_R32F, size.x, size.y), tracedSize = size;
-      glTextureSubImage2D(traced.id(), 0, 0, 0, size.x, size.y, GL_RED, GL_FLOAT, v.pixels.data());
+      wb::uploadTexture2D(traced.id(), 0, 0, size.x, size.y, GL_RED, GL_FLOAT, v.pixels.data());
     }
     auto timer = timePass("lighting");
-    glBindTextureUnit(1, traced.id());
+    wb::bindTexture(1, traced.id());
     glDepthFunc(GL_LEQUAL);
     drawScene(light, true, false);
     glDepthFunc(GL_LESS);

@@ -102,9 +102,9 @@ class CascadeLab : public wb::Lab {
     auto timer = timePass("lighting");
     const wb::Program& p = sceneVariant();
     beginCameraPass(p, light, c.matrices[0], 0);
-    glBindTextureUnit(1, maps.texture());
-    glBindTextureUnit(2, maps.texture());
-    glBindTextureUnit(3, moments.texture());
+    wb::bindTexture(1, maps.texture());
+    wb::bindTexture(2, maps.texture());
+    wb::bindTexture(3, moments.texture());
     glBindSampler(2, compare.id());
     setCascadeUniforms(p, c);
     p.set("u_view", camera.view());

@@ -2,6 +2,8 @@
 // exit code, never a crash; compiler errors name the original file and line; a broken shader edit
 // keeps the last good program.
 #include "common/crash_report.hpp"
+#include "common/exercise_board.hpp"
+#include "common/exercise_chunks.hpp"
 #include "common/exercise_tape.hpp"
 #include "common/ground_truth.hpp"
 #include "common/prefilter.hpp"
@@ -253,6 +255,31 @@ TEST(ExerciseTape, ReplaysSomeExercisesAndRecordsTheOthers) {
   const auto saved = nlohmann::json::parse(wb::readFile(dir / "recorded.json"));
   EXPECT_EQ(saved.at("calls").size(), 1u) << saved.dump();
   EXPECT_EQ(saved.at("calls").at("10.1").size(), 2u) << saved.dump();
+}
+
+// The exercise panel's probes: a chunk that does not compile marks its own exercise failed, and the
+// others are probed with its last good text in its place (a syntax error in 09.3 had marked 09.2
+// "error" in the window too).
+TEST_F(GlTest, ExerciseBoardMarksOnlyTheChunkThatDoesNotCompile) {
+  const fs::path dir = scratch("board"), file = dir / "exercise.glsl";
+  const std::string good = wb::readFile(fs::path(wb::variant::kLabDir) / "shaders/exercise.glsl");
+  writeFile(file, good);
+  setenv("WB_SHADER_OVERLAY", dir.c_str(), 1);
+  wb::ExerciseBoard board(fs::path(wb::variant::kLabDir) / "exercises.json");
+  board.addProbe("01.3", "exercise.glsl", "worldToShadowCoord(mat4(1.0), vec3(0.0)).x");
+  board.addProbe("01.4", "exercise.glsl", "hardShadow(wb_tex0, vec3(0.5), 0.0)");
+  board.addProbe("01.5", "exercise.glsl", "casterCoverage(wb_tex0, vec2(0.5), 0.5)");
+  board.probe();
+  for (const char* id : {"01.3", "01.4", "01.5"}) ASSERT_NE(board.stateOf(id), wb::ExerciseState::Failed) << id;
+  std::string broken = good;  // a syntax error on the first line of 01.4's function
+  const size_t brace = broken.find('{', wb::chunkRange(broken, "01.4").first);
+  broken.insert(brace + 1, "\n  float oops = ;");
+  touch(file, broken, 2);
+  board.probe();
+  EXPECT_EQ(board.stateOf("01.4"), wb::ExerciseState::Failed);
+  EXPECT_NE(board.stateOf("01.3"), wb::ExerciseState::Failed) << "01.3's chunk compiles: it is not 01.4's error";
+  EXPECT_NE(board.stateOf("01.5"), wb::ExerciseState::Failed) << "01.5's chunk compiles: it is not 01.4's error";
+  unsetenv("WB_SHADER_OVERLAY");
 }
 
 // The lab command line: bad input gets one clear line and exit code 2, no display exit code 3.

@@ -378,14 +378,6 @@ static nlohmann::json drawExercise(const std::string& id, const fs::path& out, c
   return runAppJson(out, "WB_STRICT_GL=1 " + isolatedGlsl(id, out), trustedExe(), withOthers(id, out, args, calls));
 }
 
-// The exercise whose GLSL a compile error ("path/shaders/exercise.glsl:13: error: ...") is in, or "".
-static std::string glslErrorOwner(const std::string& cause) {
-  static const std::regex where(R"(([^\s:]+):(\d+): error)");
-  std::smatch m;
-  if (!std::regex_search(cause, m, where)) return "";
-  return exerciseAtLine(fs::path(m[1].str()).filename().string(), std::stoi(m[2].str()));
-}
-
 // Draws exercise `id` (drawExercise) with a record, and reads it. Fails with ERROR / NOT
 // IMPLEMENTED when it did not run, and always in a runner (which decides nothing).
 static ::testing::AssertionResult runIsolated(const std::string& id, const fs::path& out,
