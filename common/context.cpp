@@ -31,9 +31,11 @@ void APIENTRY onGlDebug(GLenum source, GLenum type, GLuint, GLenum severity, GLs
 }
 
 void installDebugOutput() {
+  // Core in 4.3, KHR_debug before: macOS's 4.1 has neither, and then GL errors go unreported.
+  if (!glDebugMessageCallback || !hasGlExtension("GL_KHR_debug")) return;
   glEnable(GL_DEBUG_OUTPUT);
-  glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);  // the callback runs inside the failing call
-  glDebugMessageCallback(onGlDebug, nullptr);
+  glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);       // the callback runs inside the failing call
+  glDebugMessageCallback(onGlDebug, nullptr);  // gl41-optional
 }
 
 void requireGl45(const char* how) {

@@ -4,10 +4,10 @@ namespace wb {
 
 namespace {
 Texture makeMultisample(GLenum format, glm::ivec2 size, int samples) {
-  GLuint id = 0;
-  glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &id);
-  glTextureStorage2DMultisample(id, samples, format, size.x, size.y, GL_TRUE);
-  return Texture(id);
+  Texture texture = makeTexture(GL_TEXTURE_2D_MULTISAMPLE);
+  BoundTexture edit(GL_TEXTURE_2D_MULTISAMPLE, texture.id());
+  glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, samples, format, size.x, size.y, GL_TRUE);
+  return texture;
 }
 }  // namespace
 
@@ -55,13 +55,13 @@ void FrameTarget::resolve() {
     const GLenum buffer = GLenum(GL_COLOR_ATTACHMENT0 + k);
     glReadBuffer(buffer);
     const GLenum draw[3] = {k == 0 ? buffer : GL_NONE, k == 1 ? buffer : GL_NONE, k == 2 ? buffer : GL_NONE};
-    glNamedFramebufferDrawBuffers(fbo_.id(), 3, draw);
+    glDrawBuffers(3, draw);  // (fbo_'s: it is the bound draw framebuffer)
     glBlitFramebuffer(0, 0, size_.x, size_.y, 0, 0, size_.x, size_.y,
                       k == 0 ? GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT : GL_COLOR_BUFFER_BIT,
                       GL_NEAREST);
   }
   const GLenum all[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-  glNamedFramebufferDrawBuffers(fbo_.id(), 3, all);
+  glDrawBuffers(3, all);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   bind();
 }
@@ -74,29 +74,30 @@ void FrameTarget::maskDataOutputs(bool masked) const {
 void FrameTarget::copyColumns(int x, int w, const Texture (&into)[3], bool back) const {
   for (int t = 0; t < 3; ++t) {
     if (back)
-      glCopyImageSubData(into[t].id(), GL_TEXTURE_2D, 0, 0, 0, 0, color_[t].id(), GL_TEXTURE_2D, 0, x, 0, 0, w, size_.y,
-                         1);
+      copyTexture2D(into[t].id(), {0, 0}, color_[t].id(), {x, 0}, {w, size_.y});
     else
-      glCopyImageSubData(color_[t].id(), GL_TEXTURE_2D, 0, x, 0, 0, into[t].id(), GL_TEXTURE_2D, 0, 0, 0, 0, w, size_.y,
-                         1);
+      copyTexture2D(color_[t].id(), {x, 0}, into[t].id(), {0, 0}, {w, size_.y});
   }
 }
 
 std::vector<uint8_t> FrameTarget::readColor() const {
   std::vector<uint8_t> px(size_t(size_.x) * size_t(size_.y) * 4);
-  glGetTextureImage(color_[0].id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(px.size()), px.data());
+  BoundTexture read(GL_TEXTURE_2D, color_[0].id());
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
   return px;
 }
 
 FloatImage FrameTarget::readVisibility() const {
   FloatImage img{size_.x, size_.y, std::vector<float>(size_t(size_.x) * size_t(size_.y))};
-  glGetTextureImage(color_[1].id(), 0, GL_RED, GL_FLOAT, GLsizei(img.pixels.size() * sizeof(float)), img.pixels.data());
+  BoundTexture read(GL_TEXTURE_2D, color_[1].id());
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RED, GL_FLOAT, img.pixels.data());
   return img;
 }
 
 std::vector<glm::vec4> FrameTarget::readPositions() const {
   std::vector<glm::vec4> p(size_t(size_.x) * size_t(size_.y));
-  glGetTextureImage(color_[2].id(), 0, GL_RGBA, GL_FLOAT, GLsizei(p.size() * sizeof(glm::vec4)), p.data());
+  BoundTexture read(GL_TEXTURE_2D, color_[2].id());
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, p.data());
   return p;
 }
 

@@ -107,6 +107,9 @@ GLenum textureTarget(GLuint id);
 /// Binds texture `id` (made by makeTexture(), or 0) to texture unit `unit`, which becomes the active
 /// one: glBindTextureUnit, which GL 4.1 lacks.
 void bindTexture(GLuint unit, GLuint id);
+/// Copies a size.x x size.y rectangle of level 0 of 2D texture `from`, at `at`, into 2D texture `into`
+/// at `to` (glCopyImageSubData, which GL 4.1 lacks: through a framebuffer, glCopyTexSubImage2D).
+void copyTexture2D(GLuint from, const int (&at)[2], GLuint into, const int (&to)[2], const int (&size)[2]);
 /// Writes a w x h rectangle at (x, y) of level 0 of 2D texture `id` from `data` (glTexSubImage2D).
 void uploadTexture2D(GLuint id, int x, int y, int w, int h, GLenum format, GLenum type, const void* data);
 /// Gives the texture bound to `target` `levels` levels of `internalFormat`, w x h at level 0 (each
