@@ -25,6 +25,8 @@ GLenum bindingOf(GLenum target) {
       return GL_TEXTURE_BINDING_2D_MULTISAMPLE;
     case GL_TEXTURE_3D:
       return GL_TEXTURE_BINDING_3D;
+    case GL_TEXTURE_BUFFER:
+      return GL_TEXTURE_BINDING_BUFFER;
     default:
       throw Error("no texture binding for target " + std::to_string(target));
   }

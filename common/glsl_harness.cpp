@@ -21,24 +21,23 @@ namespace wb {
 
 namespace {
 
-// The kernel's compute shader: declarations, the functions (keeping their own source numbers, 0 =
-// origin, then its includes, so errors name the student's file and line), then main().
+// The kernel's vertex shader, one vertex per case (OpenGL 4.1 has no compute shaders): declarations,
+// the functions (keeping their own source numbers, 0 = origin, then its includes, so errors name the
+// student's file and line), then main(), whose `result` transform feedback captures.
 ShaderSource kernelSource(const std::string& functions, const fs::path& origin, const std::string& body, int stride,
                           const std::vector<SamplerType>& types) {
   std::ostringstream src;
   src << "#version 450 core\n"
-      << "layout(local_size_x = 64) in;\n"
-      << "layout(std430, binding = 0) readonly buffer WbIn { vec4 wb_in[]; };\n"
-      << "layout(std430, binding = 1) writeonly buffer WbOut { vec4 wb_out[]; };\n"
-      << "uniform int wb_count;\n"
-      << "layout(binding = 7) uniform sampler2DShadow wb_shadow0;  // a depth-compare sampler, if bound\n";
+      << "uniform samplerBuffer wb_in;  // the inputs, a vec4 per texel\n"
+      << "out vec4 wb_out;             // the results, captured by transform feedback\n"
+      << "uniform sampler2DShadow wb_shadow0;  // a depth-compare sampler on unit 7, if bound\n";
   for (size_t t = 0; t < types.size(); ++t) src << "uniform " << glslSamplerName(types[t]) << " wb_tex" << t << ";\n";
   ShaderSource pre = preprocessShader(functions, origin, "", shaderSearchPath());
-  src << "#define IN(k) wb_in[wb_i * " << stride << " + (k)]\n"
+  src << "#define IN(k) texelFetch(wb_in, wb_i * " << stride << " + (k))\n"
       << "#line 1 0\n"
       << pre.text << "\n#line 1 " << pre.files.size() << "\n"
-      << "void main() {\n  int wb_i = int(gl_GlobalInvocationID.x);\n  if (wb_i >= wb_count) return;\n"
-      << "  vec4 result = vec4(0.0);\n  " << body << "\n  wb_out[wb_i] = result;\n}\n";
+      << "void main() {\n  int wb_i = gl_VertexID;\n"
+      << "  vec4 result = vec4(0.0);\n  " << body << "\n  wb_out = result;\n}\n";
   pre.files.emplace_back("<harness main>");
   pre.text = src.str();
   return pre;
@@ -219,7 +218,7 @@ std::vector<glm::vec4> runGlslKernelWithSamplers(const std::string& functions, c
   for (const auto& t : textures) types.push_back(t.type == SamplerType::Auto ? samplerTypeOf(t.id) : t.type);
   ProgramId prog;
   try {
-    prog = linkProgram({{GL_COMPUTE_SHADER, kernelSource(functions, origin, body, stride, types)}});
+    prog = linkProgram({{GL_VERTEX_SHADER, kernelSource(functions, origin, body, stride, types)}}, {"wb_out"});
   } catch (const Error& e) {
     throw Error(std::string("compile error:\n") + e.what());
   }
@@ -228,28 +227,47 @@ std::vector<glm::vec4> runGlslKernelWithSamplers(const std::string& functions, c
   padded.resize(std::max<size_t>(inputs.size(), 1));
   Buffer in = makeBuffer(padded.size() * sizeof(glm::vec4), padded.data(), GL_STATIC_DRAW);
   Buffer out = makeBuffer(size_t(std::max(count, 1)) * sizeof(glm::vec4), nullptr, GL_DYNAMIC_READ);
+  Texture inTexels = makeTexture(GL_TEXTURE_BUFFER);
+  {
+    BoundTexture edit(GL_TEXTURE_BUFFER, inTexels.id());
+    glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, in.id());
+  }
+  const GLuint inUnit = 15;  // (16 units a vertex shader has at least: 0.. for the textures, 7 the shadow sampler)
   glUseProgram(prog.id());
-  glProgramUniform1i(prog.id(), glGetUniformLocation(prog.id(), "wb_count"), count);
+  glProgramUniform1i(prog.id(), glGetUniformLocation(prog.id(), "wb_in"), GLint(inUnit));
+  glProgramUniform1i(prog.id(), glGetUniformLocation(prog.id(), "wb_shadow0"), 7);
+  bindTexture(inUnit, inTexels.id());
   for (size_t t = 0; t < textures.size(); ++t) {
     glBindTextureUnit(GLuint(t), textures[t].id);
     if (textures[t].sampler) glBindSampler(GLuint(t), textures[t].sampler);
     const std::string name = "wb_tex" + std::to_string(t);
     glProgramUniform1i(prog.id(), glGetUniformLocation(prog.id(), name.c_str()), GLint(t));
   }
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
-  // Timed on the clock, to glFinish: llvmpipe's timer queries do not count compute dispatches.
+  const VertexArray points = makeEmptyVertexArray();
+  BoundVertexArray draw(points.id());
+  // A draw needs a complete framebuffer even when it rasterizes nothing (a headless context has none).
+  const Texture pixel = makeTexture2D(GL_R8, 1, 1);
+  const Framebuffer target = makeFramebuffer({pixel.id()}, 0);
+  BoundFramebuffer into(target.id());
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, out.id());
+  glEnable(GL_RASTERIZER_DISCARD);
+  // Timed on the clock, to glFinish, as the judge compares a student's kernel with the reference's.
   glFinish();
   const auto start = std::chrono::steady_clock::now();
-  glDispatchCompute(GLuint((count + 63) / 64), 1, 1);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glBeginTransformFeedback(GL_POINTS);
+  glDrawArrays(GL_POINTS, 0, count);
+  glEndTransformFeedback();
   glFinish();
   g_lastKernelMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  glDisable(GL_RASTERIZER_DISCARD);
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
   std::vector<glm::vec4> result(static_cast<size_t>(count));
-  glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(count * sizeof(glm::vec4)), result.data());
+  glBindBuffer(GL_COPY_READ_BUFFER, out.id());
+  glGetBufferSubData(GL_COPY_READ_BUFFER, 0, GLsizeiptr(count * sizeof(glm::vec4)), result.data());
+  glBindBuffer(GL_COPY_READ_BUFFER, 0);
   for (size_t t = 0; t < textures.size(); ++t)
     if (textures[t].sampler) glBindSampler(GLuint(t), 0);
-  glUseProgram(0);
+  glUseProgram(0);  // (deleting inTexels unbinds it from its unit)
   return result;
 }
 

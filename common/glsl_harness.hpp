@@ -1,7 +1,6 @@
 /// @file glsl_harness.hpp
-/// Runs GLSL functions on synthetic inputs in a compute shader, and assembles exercise files so an
-/// exercise can be run with the solution versions of the others. Tests and the lab's status panel
-/// both use it.
+/// Runs GLSL functions on synthetic inputs in a vertex shader with transform feedback, and assembles exercise files so
+/// an exercise can be run with the solution versions of the others. Tests and the lab's status panel both use it.
 #pragma once
 #include "common/exercise_chunks.hpp"  // findMarker()
 #include "common/gl.hpp"
@@ -69,13 +68,14 @@ struct KernelTexture {
   GLuint sampler = 0;                    ///< a sampler object for its unit, or 0 for the texture's own state
 };
 
-/// Runs `body` once per invocation `wb_i` in [0, count) in a compute shader that first includes
+/// Runs `body` once per case `wb_i` in [0, count) in a vertex shader (one point per case, `result`
+/// captured by transform feedback: OpenGL 4.1 has no compute shaders) that first includes
 /// `functions` (read as if it were the file `origin`). The body reads its inputs with IN(k) =
-/// inputs[wb_i * stride + k] and writes `vec4 result`. Textures are bound to units 0.. as the
-/// uniforms wb_tex0, wb_tex1, ..., each declared with the sampler type samplerTypeOf() gives
-/// (sampler2D, sampler2DShadow, samplerCube, samplerCubeShadow, sampler2DArray or
-/// sampler2DArrayShadow); a depth texture with a compare sampler bound to unit 7 by the caller is
-/// `wb_shadow0` (a sampler2DShadow). Throws wb::Error with file:line on a compile error.
+/// inputs[wb_i * stride + k] (a texel of a buffer texture) and writes `vec4 result`. Textures are bound to units 0.. as
+/// the uniforms wb_tex0, wb_tex1, ..., each declared with the sampler type samplerTypeOf() gives (sampler2D,
+/// sampler2DShadow, samplerCube, samplerCubeShadow, sampler2DArray or sampler2DArrayShadow); a depth texture with a
+/// compare sampler bound to unit 7 by the caller is `wb_shadow0` (a sampler2DShadow). Throws wb::Error with file:line
+/// on a compile error.
 std::vector<glm::vec4> runGlslKernel(const std::string& functions, const std::filesystem::path& origin,
                                      const std::string& body, int count, int stride,
                                      const std::vector<glm::vec4>& inputs, const std::vector<GLuint>& textures = {});

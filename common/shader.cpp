@@ -164,7 +164,8 @@ Program Program::fromSource(GLenum type, const std::string& text, const std::str
   return p;
 }
 
-ProgramId linkProgram(const std::vector<std::pair<GLenum, ShaderSource>>& stages) {
+ProgramId linkProgram(const std::vector<std::pair<GLenum, ShaderSource>>& stages,
+                      const std::vector<std::string>& feedback) {
   ProgramId program(glCreateProgram());
   std::vector<GLuint> shaders;
   std::string errors;
@@ -186,6 +187,10 @@ ProgramId linkProgram(const std::vector<std::pair<GLenum, ShaderSource>>& stages
     shaders.push_back(sh);
   }
   if (errors.empty()) {
+    std::vector<const char*> names;
+    for (const auto& f : feedback) names.push_back(f.c_str());
+    if (!names.empty())
+      glTransformFeedbackVaryings(program.id(), GLsizei(names.size()), names.data(), GL_INTERLEAVED_ATTRIBS);
     glLinkProgram(program.id());
     GLint ok = 0;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);

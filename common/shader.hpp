@@ -55,8 +55,10 @@ constexpr int kThisFileSource = 9998;  ///< "back to this file", as above
 /// Rewrites compiler positions such as "2:14(3): error" into "shaders/exercise.glsl:14: error".
 std::string mapShaderLog(const std::string& log, const std::vector<std::filesystem::path>& files);
 
-/// Compiles and links preprocessed stages; throws wb::Error with every message mapped to file:line.
-ProgramId linkProgram(const std::vector<std::pair<GLenum, ShaderSource>>& stages);
+/// Compiles and links preprocessed stages, with `feedback` the outputs that transform feedback
+/// captures (interleaved); throws wb::Error with every message mapped to file:line.
+ProgramId linkProgram(const std::vector<std::pair<GLenum, ShaderSource>>& stages,
+                      const std::vector<std::string>& feedback = {});
 
 /// Defines every program is built with besides its own: the app's present.* settings
 /// (WB_PRESENT_SRGB, WB_PRESENT_GRID), compiled in rather than branched on, so that they cost
