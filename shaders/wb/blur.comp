@@ -1,4 +1,4 @@
-#version 450 core
+#version 450 core  // gl41-optional: compute, used only where the context has it (prefilter.cpp)
 // One pass of the separable prefilter as a compute shader (prefilter.compute): the same taps,
 // weights and clamping as blur.frag, one invocation per texel, stored with imageStore. The image
 // format (WB_IMAGE_FORMAT: r32f, rg32f, rgba32f or their 16-bit forms) is injected by the framework.
