@@ -125,16 +125,11 @@ void copyTexture2D(GLuint from, const int (&at)[2], GLuint into, const int (&to)
   GLuint fbo = 0;
   glGenFramebuffers(1, &fbo);
   Framebuffer owner(fbo);
-  GLint read = 0;
-  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
-  glFramebufferTexture(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, from, 0);
+  BoundFramebuffer source(fbo);  // (glCopyTexSubImage2D reads from the read framebuffer)
+  glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, from, 0);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
-  {
-    BoundTexture edit(GL_TEXTURE_2D, into);
-    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, to[0], to[1], at[0], at[1], size[0], size[1]);
-  }
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(read));
+  BoundTexture edit(GL_TEXTURE_2D, into);
+  glCopyTexSubImage2D(GL_TEXTURE_2D, 0, to[0], to[1], at[0], at[1], size[0], size[1]);
 }
 
 void uploadTexture2D(GLuint id, int x, int y, int w, int h, GLenum format, GLenum type, const void* data) {

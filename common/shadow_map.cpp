@@ -27,8 +27,8 @@ Texture makeDepthTexture(GLenum target, int size, int layers) {
 
 // Attaches one layer (face) of `texture` as the bound framebuffer's depth. (GL 4.1 attaches a cube
 // map's face as a 2D image: glFramebufferTextureLayer takes cube maps from 4.5 on.)
-void attachDepthLayer(GLenum target, GLuint texture, int layer) {
-  if (target == GL_TEXTURE_CUBE_MAP)
+void attachDepthLayer(GLuint texture, int layer) {
+  if (textureTarget(texture) == GL_TEXTURE_CUBE_MAP)
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(layer), texture,
                            0);
   else
@@ -36,7 +36,7 @@ void attachDepthLayer(GLenum target, GLuint texture, int layer) {
 }
 
 // A depth-only framebuffer on one layer (face) of `texture`, or on all of them when layer < 0.
-Framebuffer depthFramebuffer(GLenum target, GLuint texture, int layer) {
+Framebuffer depthFramebuffer(GLuint texture, int layer) {
   GLuint id = 0;
   glGenFramebuffers(1, &id);
   Framebuffer fbo(id);
@@ -46,7 +46,7 @@ Framebuffer depthFramebuffer(GLenum target, GLuint texture, int layer) {
   if (layer < 0)
     glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture, 0);
   else
-    attachDepthLayer(target, texture, layer);
+    attachDepthLayer(texture, layer);
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)
     throw Error("shadow map framebuffer incomplete (0x" + std::to_string(status) + ")");
@@ -68,7 +68,7 @@ void ShadowMap::resize(int size) {
   if (size == size_ && texture_.id()) return;
   size_ = size;
   texture_ = makeDepthTexture(GL_TEXTURE_2D, size, 1);
-  fbo_ = depthFramebuffer(GL_TEXTURE_2D, texture_.id(), -1);
+  fbo_ = depthFramebuffer(texture_.id(), -1);
 }
 
 void ShadowMap::begin() const { bindAndClear(fbo_, size_); }
@@ -83,14 +83,14 @@ void CubeShadowMap::resize(int size) {
   if (size == size_ && texture_.id()) return;
   size_ = size;
   texture_ = makeDepthTexture(GL_TEXTURE_CUBE_MAP, size, 6);
-  layeredFbo_ = depthFramebuffer(GL_TEXTURE_CUBE_MAP, texture_.id(), -1);
-  fbo_ = depthFramebuffer(GL_TEXTURE_CUBE_MAP, texture_.id(), 0);
+  layeredFbo_ = depthFramebuffer(texture_.id(), -1);
+  fbo_ = depthFramebuffer(texture_.id(), 0);
 }
 
 void CubeShadowMap::begin(int face) const {
   if (face < 0 || face > 5) throw Error("CubeShadowMap::begin: face " + std::to_string(face) + " is not in 0..5");
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-  attachDepthLayer(GL_TEXTURE_CUBE_MAP, texture_.id(), face);
+  attachDepthLayer(texture_.id(), face);
   bindAndClear(fbo_, size_);
 }
 
@@ -110,8 +110,8 @@ void ShadowMapArray::resize(int size, int layers) {
   size_ = size, layers_ = layers;
   texture_ = makeDepthTexture(GL_TEXTURE_2D_ARRAY, size, layers);
   fbos_.clear();
-  for (int k = 0; k < layers; ++k) fbos_.push_back(depthFramebuffer(GL_TEXTURE_2D_ARRAY, texture_.id(), k));
-  layeredFbo_ = depthFramebuffer(GL_TEXTURE_2D_ARRAY, texture_.id(), -1);
+  for (int k = 0; k < layers; ++k) fbos_.push_back(depthFramebuffer(texture_.id(), k));
+  layeredFbo_ = depthFramebuffer(texture_.id(), -1);
 }
 
 void ShadowMapArray::begin(int layer) const {

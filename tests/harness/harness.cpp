@@ -214,6 +214,14 @@ static std::string isolatedGlsl(const std::string& id, const fs::path& out) {
   return "WB_SHADER_OVERLAY=" + quote(out.string()) + " ";
 }
 
+// The reference's results for every C++ exercise but `id` in a run with `args` (reference_calls.hpp),
+// written to `out`/reference_calls.json for --replay-exercises; empty when there are none, and in a
+// varied scene, which the judge's reference draws again instead.
+static fs::path referenceOthers(const std::string& id, const fs::path& out, const std::vector<std::string>& args) {
+  const fs::path others = out / "reference_calls.json";
+  return varySeed() < 0 && referenceCallsOfOthers(referenceCallsFile(args), id, others) ? others : fs::path();
+}
+
 // Direct (ctest, check): this build's lab draws exercise `id` in isolation. Every other C++
 // exercise's result is the reference's (reference_calls.hpp), so a mistake there cannot block this
 // one; a GLSL exercise runs in the solution's app where there is one, a C++ exercise in this
@@ -223,12 +231,12 @@ static nlohmann::json runDirect(const std::string& id, const fs::path& out, cons
   fs::create_directories(out);
   const bool glsl = !glslExerciseFile(id).empty();
   const std::string exe = glsl && !updatingGolden() ? trustedExe() : variant::kLabExe;
-  const fs::path reference = referenceCallsFile(args), others = out / "reference_calls.json";
+  const fs::path reference = referenceCallsFile(args);
   std::vector<std::string> all = args;
   if (updatingGolden()) {
     fs::create_directories(reference.parent_path());
     all = joined(args, {"--record-exercises", reference.string()});
-  } else if (varySeed() < 0 && referenceCallsOfOthers(reference, id, others)) {
+  } else if (const fs::path others = referenceOthers(id, out, args); !others.empty()) {
     all = joined(args, {"--replay-exercises", others.string()});
   }
   auto run = runAppJson(out, "WB_STRICT_GL=1 " + isolatedGlsl(id, out), exe, all);
@@ -267,11 +275,11 @@ static std::string recordEnv() {
 // from the reference's splits, and a wrong 10.1 is marked in 10.1 alone.
 static nlohmann::json recordRun(const std::string& key, const fs::path& out, const std::vector<std::string>& args,
                                 const std::string& id = "", const std::vector<std::string>& scene = {}) {
-  const fs::path calls = out / "exercises.json", others = out / "reference_calls.json";
+  const fs::path calls = out / "exercises.json";
   fs::create_directories(out);
   fs::remove(calls);
   std::vector<std::string> all = joined(args, {"--record-exercises", calls.string()});
-  if (!id.empty() && varySeed() < 0 && referenceCallsOfOthers(referenceCallsFile(scene), id, others))
+  if (const fs::path others = id.empty() ? fs::path() : referenceOthers(id, out, scene); !others.empty())
     all = joined(all, {"--replay-exercises", others.string()});
   const auto run = observeJson(key, [&] { return runAppJson(out, recordEnv(), variant::kLabExe, all); });
   observeFile(key + ".exercises", calls);
@@ -285,6 +293,9 @@ static nlohmann::json recordRun(const std::string& key, const fs::path& out, con
 // replayed (one that passed gets the solution's code, so a student cannot feed the graded exercise
 // made-up inputs in one test alone). Without WB_REPLAY_USES every used exercise is.
 static std::vector<std::string> exerciseUses(const std::string& id) {
+  // Compared with the golden (check, ctest), which was drawn with the reference's inputs: the used
+  // exercises are the reference's too, so a mistake upstream is marked upstream alone.
+  if (varySeed() < 0) return {};
   std::vector<std::string> uses;
   try {
     const auto manifest = nlohmann::json::parse(readFile(fs::path(variant::kLabDir) / "exercises.json"));
@@ -292,9 +303,6 @@ static std::vector<std::string> exerciseUses(const std::string& id) {
       if (e.at("id") == id) uses = e.value("uses", std::vector<std::string>{});
   } catch (const std::exception&) {
   }
-  // Compared with the golden (check, ctest), which was drawn with the reference's inputs: the used
-  // exercises are the reference's too, so a mistake upstream is marked upstream alone.
-  if (varySeed() < 0) return {};
   if (const char* failed = std::getenv("WB_REPLAY_USES")) {
     const std::string list = "," + std::string(failed) + ",";
     uses.erase(std::remove_if(uses.begin(), uses.end(),
@@ -337,8 +345,7 @@ static bool keepOnlyCalls(const fs::path& file, const std::string& id, const fs:
 static std::vector<std::string> withOthers(const std::string& id, const fs::path& out,
                                            const std::vector<std::string>& args, const fs::path& calls = {}) {
   nlohmann::json replay = nlohmann::json::object();
-  const fs::path others = out / "reference_calls.json";
-  if (!variant::kSolutionExe[0] && varySeed() < 0 && referenceCallsOfOthers(referenceCallsFile(args), id, others))
+  if (const fs::path others = variant::kSolutionExe[0] ? fs::path() : referenceOthers(id, out, args); !others.empty())
     replay = parseShallowJson(readFile(others)).at("calls");
   if (!calls.empty()) {
     const auto mine = parseShallowJson(readFile(calls));  // (kept alive: items() refers into it)
