@@ -1,4 +1,5 @@
 #include "common/app.hpp"
+#include "common/imgui_backends.hpp"
 
 #include "common/context.hpp"
 #include "common/crash_report.hpp"
@@ -8,8 +9,6 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
-#include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
 #include <algorithm>
@@ -28,7 +27,7 @@ struct App::ImGuiLayer {
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;
     ImGui_ImplGlfw_InitForOpenGL(window, true);
-    ImGui_ImplOpenGL3_Init("#version 450 core");
+    ImGui_ImplOpenGL3_Init("#version 410 core");
   }
   ~ImGuiLayer() {
     ImGui_ImplOpenGL3_Shutdown();

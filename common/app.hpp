@@ -37,7 +37,7 @@ class App {
  public:
   /// Runs `lab` with the shared command line: parses it, configures the lab, opens the context,
   /// hosts the lab and renders (or sweeps), then writes the outputs and the record. Returns the
-  /// exit code: 0 done, 1 failed, 2 bad input, 3 no OpenGL 4.5 context.
+  /// exit code: 0 done, 1 failed, 2 bad input, 3 no OpenGL 4.1 context.
   static int runLab(int argc, char** argv, std::unique_ptr<Lab> lab);
   /// Applies the command line's --set, checks its --compare and --sweep values (CPU only, so bad
   /// input fails before any window opens); throws wb::UsageError.

@@ -1,6 +1,7 @@
 // The app's window side: the handout's picture, input (the mouse, bookmarks, presenter steps),
 // the ImGui shell over the frame, the presenter's caption band, and window screenshots.
 #include "common/app.hpp"
+#include "common/imgui_backends.hpp"
 
 #include "common/context.hpp"
 #include "common/image.hpp"
@@ -9,8 +10,6 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
-#include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 #include <stb_image.h>
 

@@ -3,7 +3,9 @@
 #include "common/error.hpp"
 #include "common/gl.hpp"
 
+#if WB_HAVE_EGL
 #include <glad/egl.h>
+#endif
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -32,21 +34,26 @@ void APIENTRY onGlDebug(GLenum source, GLenum type, GLuint, GLenum severity, GLs
 
 void installDebugOutput() {
   // Core in 4.3, KHR_debug before: macOS's 4.1 has neither, and then GL errors go unreported.
-  if (!glDebugMessageCallback || !hasGlExtension("GL_KHR_debug")) return;
+  if (!GLAD_GL_KHR_debug || !hasGlExtension("GL_KHR_debug")) return;
   glEnable(GL_DEBUG_OUTPUT);
   glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);       // the callback runs inside the failing call
   glDebugMessageCallback(onGlDebug, nullptr);  // gl41-optional
 }
 
-void requireGl45(const char* how) {
+// The workbook's OpenGL: 4.1 core, macOS's ceiling (the loader, third_party/glad, has nothing newer).
+constexpr int kGlMajor = 4, kGlMinor = 1;
+
+void requireGl41(const char* how) {
   GLint major = 0, minor = 0;
   glGetIntegerv(GL_MAJOR_VERSION, &major);
   glGetIntegerv(GL_MINOR_VERSION, &minor);
-  if (major * 10 + minor < 45)
+  if (major * 10 + minor < kGlMajor * 10 + kGlMinor)
     throw ContextError(std::string(how) + " gave OpenGL " + std::to_string(major) + "." + std::to_string(minor) +
-                       ", but the workbook needs 4.5 core. " +
-                       "Install Mesa (sudo apt-get install libgl1-mesa-dri libegl-mesa0).");
+                       ", but the workbook needs 4.1 core. On Linux, install Mesa (sudo apt-get install "
+                       "libgl1-mesa-dri libegl-mesa0); elsewhere, update the graphics driver.");
 }
+
+#if WB_HAVE_EGL
 
 class EglContext final : public Context {
  public:
@@ -68,9 +75,9 @@ class EglContext final : public Context {
     gladLoaderLoadEGL(display_);
     eglBindAPI(EGL_OPENGL_API);
     const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
-                              4,
+                              kGlMajor,
                               EGL_CONTEXT_MINOR_VERSION,
-                              5,
+                              kGlMinor,
                               EGL_CONTEXT_OPENGL_PROFILE_MASK,
                               EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                               EGL_CONTEXT_OPENGL_DEBUG,
@@ -79,11 +86,11 @@ class EglContext final : public Context {
     context_ = eglCreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
     if (context_ == EGL_NO_CONTEXT || !eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
       throw ContextError(
-          "EGL could not create a surfaceless OpenGL 4.5 core context "
+          "EGL could not create a surfaceless OpenGL 4.1 core context "
           "(EGL error 0x" +
           hex(eglGetError()) + "). Mesa 20 or newer provides one.");
     if (!gladLoaderLoadGL()) throw ContextError("cannot load OpenGL entry points through EGL");
-    requireGl45("EGL");
+    requireGl41("EGL");
   }
   ~EglContext() override {
     eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
@@ -101,49 +108,63 @@ class EglContext final : public Context {
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;
 };
+#endif
 
 std::string g_glfwError;
 
+// A GLFW window; `hidden` for headless rendering where there is no EGL (macOS, Windows): the
+// window is never shown, and the lab draws into its own framebuffer as it does with EGL.
 class GlfwContext final : public Context {
  public:
-  explicit GlfwContext(const ContextOptions& o) {
+  GlfwContext(const ContextOptions& o, bool hidden) : hidden_(hidden) {
     glfwSetErrorCallback([](int, const char* msg) { g_glfwError = msg; });
+#if !defined(__APPLE__) && !defined(_WIN32)
     const char* display = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if ((!display || !*display) && (!wayland || !*wayland))
       throw ContextError(
           "no display found (DISPLAY and WAYLAND_DISPLAY are not set). "
           "Add --headless to render to a file instead, e.g. --headless --screenshot out.png");
+#endif
     if (!glfwInit())
       throw ContextError("cannot open the display (" + g_glfwError + "). Add --headless to render to a file instead.");
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+    // GLFW's hints for a core profile on macOS (glfw.org/docs/latest/window_guide.html): 3.2 or
+    // later, core, forward compatible (macOS refuses a core context without it). Retina: the
+    // framebuffer has the display's pixels, and every viewport uses glfwGetFramebufferSize.
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, kGlMajor);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, kGlMinor);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_COCOA_RETINA_FRAMEBUFFER, GLFW_TRUE);
     glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, o.debug ? GLFW_TRUE : GLFW_FALSE);
+    glfwWindowHint(GLFW_VISIBLE, hidden ? GLFW_FALSE : GLFW_TRUE);
     window_ = glfwCreateWindow(o.width, o.height, o.title.c_str(), nullptr, nullptr);
     if (!window_) {
       glfwTerminate();
-      throw ContextError("cannot create an OpenGL 4.5 core window (" + g_glfwError +
-                         "). Add --headless to use Mesa's software renderer instead.");
+      throw ContextError(
+          "cannot create an OpenGL 4.1 core window (" + g_glfwError +
+          (hidden ? "). Update the graphics driver." : "). Add --headless to use Mesa's software renderer instead."));
     }
     glfwMakeContextCurrent(window_);
-    glfwSwapInterval(1);
+    glfwSwapInterval(hidden ? 0 : 1);
     if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress)))
       throw ContextError("cannot load OpenGL entry points through GLFW");
-    requireGl45("the window system");
+    requireGl41("the window system");
   }
   ~GlfwContext() override {
     glfwDestroyWindow(window_);
     glfwTerminate();
   }
-  bool headless() const override { return false; }
-  GLFWwindow* window() const override { return window_; }
-  bool shouldClose() const override { return glfwWindowShouldClose(window_); }
+  bool headless() const override { return hidden_; }
+  GLFWwindow* window() const override { return hidden_ ? nullptr : window_; }
+  bool shouldClose() const override { return !hidden_ && glfwWindowShouldClose(window_); }
   void endFrame() override {
+    if (hidden_) return;
     glfwSwapBuffers(window_);
     glfwPollEvents();
   }
   glm::ivec2 framebufferSize() const override {
+    if (hidden_) return {0, 0};
     glm::ivec2 s;
     glfwGetFramebufferSize(window_, &s.x, &s.y);
     return s;
@@ -151,16 +172,21 @@ class GlfwContext final : public Context {
 
  private:
   GLFWwindow* window_ = nullptr;
+  bool hidden_ = false;
 };
 
 }  // namespace
 
 std::unique_ptr<Context> Context::create(const ContextOptions& options) {
   std::unique_ptr<Context> ctx;
+#if WB_HAVE_EGL
   if (options.headless)
     ctx = std::make_unique<EglContext>(options.debug);
   else
-    ctx = std::make_unique<GlfwContext>(options);
+    ctx = std::make_unique<GlfwContext>(options, false);
+#else
+  ctx = std::make_unique<GlfwContext>(options, options.headless);
+#endif
   if (options.debug) installDebugOutput();
   return ctx;
 }

@@ -1,6 +1,7 @@
 /// @file context.hpp
-/// An OpenGL 4.5 core context: a GLFW window, or a headless EGL surfaceless context (Mesa
-/// llvmpipe). Both sit behind one interface so labs and tests never care which one they got.
+/// An OpenGL 4.1 core context: a GLFW window, or a headless one: EGL surfaceless on Linux (Mesa
+/// llvmpipe), a hidden GLFW window on macOS and Windows. Both sit behind one interface so labs and tests never care
+/// which one they got.
 #pragma once
 #include <glm/vec2.hpp>
 
@@ -14,7 +15,7 @@ namespace wb {
 
 /// How to create a context.
 struct ContextOptions {
-  bool headless = false;  ///< EGL surfaceless instead of a window
+  bool headless = false;  ///< no window: EGL surfaceless (Linux) or a hidden window (macOS, Windows)
   int width = 960;        ///< window width in pixels (ignored when headless)
   int height = 540;       ///< window height in pixels (ignored when headless)
   std::string title;      ///< window title
@@ -27,7 +28,7 @@ class Context {
   /// Creates the context and makes it current; throws wb::ContextError with a hint on failure.
   static std::unique_ptr<Context> create(const ContextOptions& options);
   virtual ~Context() = default;
-  /// True for the EGL surfaceless context.
+  /// True for a headless context (EGL surfaceless, or a hidden window).
   virtual bool headless() const = 0;
   /// The GLFW window, or nullptr when headless.
   virtual GLFWwindow* window() const { return nullptr; }

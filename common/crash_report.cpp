@@ -1,5 +1,10 @@
 #include "common/crash_report.hpp"
 
+#if defined(_WIN32)  // (no signals with a backtrace there: a crash is Windows' own report)
+namespace wb {
+void installCrashReport() {}
+}  // namespace wb
+#else
 #include <dlfcn.h>
 #include <execinfo.h>
 #include <unistd.h>
@@ -151,3 +156,4 @@ void installCrashReport() {
 }
 
 }  // namespace wb
+#endif

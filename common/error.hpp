@@ -16,7 +16,7 @@ struct UsageError : Error {
   using Error::Error;
 };
 
-/// No OpenGL 4.5 context could be created; labs exit with code 3.
+/// No OpenGL 4.1 context could be created; labs exit with code 3.
 struct ContextError : Error {
   using Error::Error;
 };

@@ -200,8 +200,8 @@ VertexArray makeEmptyVertexArray() {
 Buffer makeBuffer(size_t bytes, const void* data, GLenum usage) {
   GLuint id = 0;
   glGenBuffers(1, &id);
-  GLint previous = 0;  // (GL_COPY_WRITE_BUFFER: a binding nothing draws with)
-  glGetIntegerv(GL_COPY_WRITE_BUFFER_BINDING, &previous);
+  GLint previous = 0;                              // (GL_COPY_WRITE_BUFFER: a binding nothing draws with)
+  glGetIntegerv(GL_COPY_WRITE_BUFFER, &previous);  // (the binding query: its 4.2 name is ..._BINDING)
   glBindBuffer(GL_COPY_WRITE_BUFFER, id);
   glBufferData(GL_COPY_WRITE_BUFFER, GLsizeiptr(bytes), data, usage);
   glBindBuffer(GL_COPY_WRITE_BUFFER, GLuint(previous));

@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "common/exercise_chunks.hpp"
 #include "common/shader.hpp"
+#include "common/texture_io.hpp"
 #include "common/variant.hpp"
 
 #include <nlohmann/json.hpp>
@@ -27,7 +28,7 @@ namespace {
 ShaderSource kernelSource(const std::string& functions, const fs::path& origin, const std::string& body, int stride,
                           const std::vector<SamplerType>& types) {
   std::ostringstream src;
-  src << "#version 450 core\n"
+  src << "#version 410 core\n"
       << "uniform samplerBuffer wb_in;  // the inputs, a vec4 per texel\n"
       << "out vec4 wb_out;             // the results, captured by transform feedback\n"
       << "uniform sampler2DShadow wb_shadow0;  // a depth-compare sampler on unit 7, if bound\n";
@@ -179,10 +180,9 @@ const char* glslSamplerName(SamplerType type) {
 
 SamplerType samplerTypeOf(GLuint id) {
   if (id == 0) return SamplerType::Sampler2D;
-  GLint target = 0, compare = GL_NONE;
-  glGetTextureParameteriv(id, GL_TEXTURE_TARGET, &target);
-  glGetTextureParameteriv(id, GL_TEXTURE_COMPARE_MODE, &compare);
-  const bool shadow = compare == GL_COMPARE_REF_TO_TEXTURE;
+  const GLenum target = textureTarget(id);
+  const bool shadow = target != GL_TEXTURE_3D && target != GL_TEXTURE_BUFFER &&
+                      textureParameter(id, GL_TEXTURE_COMPARE_MODE) == GL_COMPARE_REF_TO_TEXTURE;
   switch (target) {
     case GL_TEXTURE_2D:
       return shadow ? SamplerType::Sampler2DShadow : SamplerType::Sampler2D;
@@ -238,7 +238,7 @@ std::vector<glm::vec4> runGlslKernelWithSamplers(const std::string& functions, c
   glProgramUniform1i(prog.id(), glGetUniformLocation(prog.id(), "wb_shadow0"), 7);
   bindTexture(inUnit, inTexels.id());
   for (size_t t = 0; t < textures.size(); ++t) {
-    glBindTextureUnit(GLuint(t), textures[t].id);
+    bindTexture(GLuint(t), textures[t].id);
     if (textures[t].sampler) glBindSampler(GLuint(t), textures[t].sampler);
     const std::string name = "wb_tex" + std::to_string(t);
     glProgramUniform1i(prog.id(), glGetUniformLocation(prog.id(), name.c_str()), GLint(t));

@@ -59,7 +59,9 @@ void Label::draw(const std::string& text, glm::ivec2 pixel, glm::ivec2 size, flo
   program_.set("u_size", glm::vec2(size));
   program_.set("u_scale", scale);
   glBindVertexArray(vao_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, m.vertices.id());
+  glBindBuffer(GL_ARRAY_BUFFER, m.vertices.id());
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), nullptr);
+  glEnableVertexAttribArray(0);
   program_.set("u_color", glm::vec4(0.1f, 0.1f, 0.1f, 1));
   glDrawArrays(GL_TRIANGLES, 0, 6);
   program_.set("u_color", glm::vec4(1));

@@ -7,7 +7,12 @@
 #include <filesystem>
 #include <fstream>
 
+#if defined(_WIN32)
+#include <process.h>
+#define getpid _getpid
+#else
 #include <unistd.h>
+#endif
 
 namespace fs = std::filesystem;
 
@@ -68,8 +73,13 @@ void LiveChecks::start() {
 void LiveChecks::runOnce() {
   // The layer-1 cases only: no scene (the tests that run the lab app are named Scene or Measured).
   const fs::path json = fs::temp_directory_path() / ("wb-live-checks-" + std::to_string(::getpid()) + ".json");
+#if defined(_WIN32)  // cmd.exe: the variable is set for the command that follows it
+  const std::string cmd = "set \"WB_CHECK_JSON=" + json.string() + "\" && \"" + exe_ +
+                          "\" --check \"--gtest_filter=-*Scene*:*Measured*:Hidden*:Manifest*\" >NUL 2>&1";
+#else
   const std::string cmd = "WB_CHECK_JSON='" + json.string() + "' '" + exe_ +
                           "' --check '--gtest_filter=-*Scene*:*Measured*:Hidden*:Manifest*' >/dev/null 2>&1";
+#endif
   std::system(cmd.c_str());
   std::map<std::string, CheckVerdict> found;
   try {

@@ -84,8 +84,6 @@ void PrefilterSettings::addTo(Settings& settings) {
   settings.addChoice("prefilter.kernel", kernel, {"1", "3", "5", "7"}, "blur width in texels");
   settings.add("prefilter.gaussian", gaussian, "Gaussian weights (off: box)");
   settings.add("prefilter.mipmaps", mipmaps, "mipmaps with trilinear and 8x anisotropic filtering");
-  settings.add("prefilter.compute", compute,
-               "blur with a compute shader instead of fragment passes (OpenGL 4.3; fragments where there is none)");
   settings.assign("shadow.map_size=512");
 }
 
@@ -104,8 +102,15 @@ void FilteredShadowMapArray::resize(int size, int layers, GLenum format) {
 
 void FilteredShadowMapArray::copy(int k) const {
   const FilteredShadowMap& m = layers_.at(size_t(k));
-  glCopyImageSubData(m.texture(), GL_TEXTURE_2D, 0, 0, 0, 0, array_.id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, k, size_, size_,
-                     1);
+  // (glCopyImageSubData is 4.3: the layer is read through a framebuffer, as copyTexture2D does.)
+  GLuint fbo = 0;
+  glGenFramebuffers(1, &fbo);
+  const Framebuffer owner(fbo);
+  BoundFramebuffer source(fbo);
+  glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, m.texture(), 0);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  BoundTexture edit(GL_TEXTURE_2D_ARRAY, array_.id());
+  glCopyTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, k, 0, 0, size_, size_);
 }
 
 void FilteredShadowMap::resize(int size, const PrefilterOptions& o) {
@@ -149,63 +154,18 @@ void FilteredShadowMap::fill(const Program& program) const {
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-namespace {
-const char* imageFormat(GLenum format) {
-  switch (format) {
-    case GL_R32F:
-      return "r32f";
-    case GL_RG32F:
-      return "rg32f";
-    case GL_R16F:
-      return "r16f";
-    case GL_RG16F:
-      return "rg16f";
-    case GL_RGBA16F:
-      return "rgba16f";
-    default:
-      return "rgba32f";
-  }
-}
-}  // namespace
-
-// True when the context has compute shaders (4.3, or ARB_compute_shader): OpenGL 4.1, macOS's, has
-// none, and prefilter.compute then blurs with the fragment passes, after saying so once.
-static bool computeAvailable() {
-  static const bool available = [] {
-    GLint major = 0, minor = 0;
-    glGetIntegerv(GL_MAJOR_VERSION, &major);
-    glGetIntegerv(GL_MINOR_VERSION, &minor);
-    return major * 10 + minor >= 43 || hasGlExtension("GL_ARB_compute_shader");
-  }();
-  return available;
-}
-
 void FilteredShadowMap::prefilter(const Program& blur) {
   if (options_.kernel > 1) {
-    const bool compute = options_.compute && computeAvailable();
-    static bool told = false;
-    if (options_.compute && !compute && !std::exchange(told, true))
-      std::fprintf(stderr,
-                   "warning: prefilter.compute: this OpenGL has no compute shaders (4.3); the blur runs "
-                   "as fragment passes\n");
-    if (compute && (!compute_ || computeFormat_ != options_.format)) {
-      compute_ =
-          std::make_unique<Program>(std::vector<ShaderStage>{{GL_COMPUTE_SHADER, "wb/blur.comp"}},
-                                    std::string("#define WB_IMAGE_FORMAT ") + imageFormat(options_.format) + "\n");
-      computeFormat_ = options_.format;
-    }
-    const Program& p = compute ? *compute_ : blur;
+    const Program& p = blur;
     p.use();
     float weights[8];
     blurWeights(options_.kernel, options_.gaussian, weights);
     glProgramUniform1fv(p.id(), glGetUniformLocation(p.id(), "u_weights"), 8, weights);
     p.set("u_radius", options_.kernel / 2);
     p.set("u_source", 0);
-    if (!compute) {
-      glDisable(GL_DEPTH_TEST);
-      glBindVertexArray(vao_.id());
-      glViewport(0, 0, size_, size_);
-    }
+    glDisable(GL_DEPTH_TEST);
+    glBindVertexArray(vao_.id());
+    glViewport(0, 0, size_, size_);
     // Two passes of a 1D kernel (horizontal into scratch, vertical back): O(n) taps per texel
     // instead of O(n²) for the 2D kernel.
     const GLuint from[2] = {color_.id(), scratch_.id()}, to[2] = {scratch_.id(), color_.id()};
@@ -213,17 +173,10 @@ void FilteredShadowMap::prefilter(const Program& blur) {
     for (int pass = 0; pass < 2; ++pass) {
       glProgramUniform2i(p.id(), glGetUniformLocation(p.id(), "u_axis"), pass == 0, pass == 1);
       bindTexture(0, from[pass]);
-      if (compute) {
-        // (Only where computeAvailable(): gl41-optional marks each line for tools/gl41_check.py.)
-        glBindImageTexture(0, to[pass], 0, GL_FALSE, 0, GL_WRITE_ONLY, options_.format);     // gl41-optional
-        glDispatchCompute(GLuint(size_ + 7) / 8, GLuint(size_ + 7) / 8, 1);                  // gl41-optional
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);  // gl41-optional
-      } else {
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo[pass]);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-      }
+      glBindFramebuffer(GL_FRAMEBUFFER, fbo[pass]);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
     }
-    if (!compute) glEnable(GL_DEPTH_TEST);
+    glEnable(GL_DEPTH_TEST);
   }
   if (options_.mipmaps) {
     BoundTexture edit(GL_TEXTURE_2D, color_.id());

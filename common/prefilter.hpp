@@ -21,7 +21,6 @@ struct PrefilterOptions {
   int kernel = 3;            ///< blur width in texels: 1 (no blur), 3, 5 or 7
   bool gaussian = true;      ///< Gaussian weights (sigma = kernel / 4) instead of a box
   bool mipmaps = false;      ///< build mipmaps after the blur (trilinear, anisotropic 8x)
-  bool compute = false;      ///< blur with the compute shader (shaders/wb/blur.comp) instead of fragments
 };
 
 /// The prefilter's settings, the same in every filterable lab: prefilter.kernel, prefilter.gaussian
@@ -30,12 +29,11 @@ struct PrefilterSettings {
   int kernel = 0;        ///< width index into 1, 3, 5, 7 texels (1: bilinear only, interactive on a CPU)
   bool gaussian = true;  ///< Gaussian weights instead of a box
   bool mipmaps = false;  ///< mipmaps with trilinear and 8x anisotropic lookups
-  bool compute = false;  ///< the blur as a compute shader instead of two fragment passes
-  /// Registers the four settings, and makes 512² the default map size: the blur's cost grows with
+  /// Registers the three settings, and makes 512² the default map size: the blur's cost grows with
   /// the map's area.
   void addTo(Settings& settings);
   /// The options for a map stored in `format`.
-  PrefilterOptions options(GLenum format) const { return {format, 1 + 2 * kernel, gaussian, mipmaps, compute}; }
+  PrefilterOptions options(GLenum format) const { return {format, 1 + 2 * kernel, gaussian, mipmaps}; }
 };
 
 /// A colour shadow map with a depth buffer, blurred in place after it is drawn.
@@ -48,8 +46,7 @@ class FilteredShadowMap {
   /// Draws one full-map triangle with `program` (a synthetic map for experiments); call after begin().
   void fill(const Program& program) const;
   /// Blurs horizontally then vertically with `blurProgram` (the framework's shaders/wb/blur.frag, or
-  /// a lab's own), or with shaders/wb/blur.comp when the options ask for compute; then builds the
-  /// mipmaps if asked.
+  /// a lab's own), as two fragment passes; then builds the mipmaps if asked.
   void prefilter(const Program& blurProgram);
   /// The filtered texture (linear filtering; trilinear and anisotropic with mipmaps).
   GLuint texture() const { return color_.id(); }
@@ -64,8 +61,6 @@ class FilteredShadowMap {
   Texture color_, scratch_, depth_;
   Framebuffer fbo_, scratchFbo_, backFbo_;
   VertexArray vao_;
-  std::unique_ptr<Program> compute_;  // blur.comp for computeFormat_
-  GLenum computeFormat_ = 0;
   int size_ = 0;
   PrefilterOptions options_;
 };

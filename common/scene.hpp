@@ -89,13 +89,13 @@ class GpuScene {
   explicit GpuScene(const Scene& scene);
   /// Draws every object with `program`, setting u_model, u_color and u_hasTexture and binding the
   /// object's texture to unit `textureUnit` (a white texel when it has none). The default is the
-  /// last unit GL 4.5 guarantees, so units 0-14 stay the lab's: a shadow map bound to unit 1 is not
+  /// last unit GL 4.1 guarantees, so units 0-14 stay the lab's: a shadow map bound to unit 1 is not
   /// replaced by a leaf texture half-way through the draw. Each object is drawn `instances` times
   /// (lab 08 draws six, one per cube face, and picks the face from gl_InstanceID).
   void draw(const Program& program, int textureUnit = kAlbedoUnit, int instances = 1) const;
   /// draw(), but only the objects that cast shadows (SceneObject::castsShadow): the shadow passes.
   void drawCasters(const Program& program, int textureUnit = kAlbedoUnit, int instances = 1) const;
-  static constexpr int kAlbedoUnit = 15;  ///< GL 4.5 guarantees 16 texture units per stage
+  static constexpr int kAlbedoUnit = 15;  ///< GL 4.1 guarantees 16 texture units per stage
 
   /// Number of objects; object i is objects[i] of the Scene this was built from.
   size_t objectCount() const { return items_.size(); }

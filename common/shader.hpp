@@ -16,7 +16,7 @@ namespace wb {
 
 /// One stage of a program: its type and its file name, looked up on the search path.
 struct ShaderStage {
-  GLenum type;       ///< GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER, ...
+  GLenum type;       ///< GL_VERTEX_SHADER, GL_GEOMETRY_SHADER or GL_FRAGMENT_SHADER
   std::string file;  ///< e.g. "depth.frag"; resolved on shaderSearchPath()
 };
 

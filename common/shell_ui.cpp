@@ -160,7 +160,8 @@ void nextPanel(const ShellInput& in) {
   ImGui::PopTextWrapPos();
   if (in.picture) {
     ImGui::TextColored(kGrey, "the finished lab:");
-    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(in.picture)), ImVec2(w, h), ImVec2(0, 0),
+    ImGui::Image((ImTextureID)(intptr_t)in.picture, ImVec2(w, h),
+                 ImVec2(0, 0),  // (void* before 1.91.4, then an integer)
                  ImVec2(1, 1));
   }
   ImGui::End();

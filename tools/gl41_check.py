@@ -1,30 +1,36 @@
 #!/usr/bin/python3
-"""OpenGL 4.1 core is macOS's ceiling, and the workbook's target (issue 28). This lists what the
-tracked sources still use beyond it, per file:
-  - entry points that 4.5 core has and 4.1 core lacks (glCreateTextures, glDispatchCompute, ...),
-    found by generating both loaders with glad 2 (python3-glad) and comparing their functions;
-  - shaders, and GLSL in C++ strings, that say #version 420 to 460.
-A line that says "gl41-optional" is not counted: it runs only where a check found the feature.
-It fails when a file uses more than tools/gl41_baseline.json allows, so the migration only goes
-down; a file not in the baseline allows none. When a change removes uses, --write-baseline records
-the new counts (and refuses to record a rise; without a baseline it records the first one).
+"""OpenGL 4.1 core is macOS's ceiling, and the workbook's one code path. This fails on any use
+beyond it in the tracked sources (C++, GLSL files, and GLSL in C++ strings):
+  - an entry point that 4.5 core has and 4.1 core lacks (glCreateTextures, glDispatchCompute, ...),
+    found by generating both loaders with glad 2 (python3-glad) and comparing their functions
+    (the committed loader, third_party/glad, is 4.1: such a call would not even compile);
+  - #version 420 to 460;
+  - GLSL and C++ of 4.2+: layout(binding = N) (bind with glUniform1i), shader storage buffers,
+    image load/store, compute shaders.
+A line that says "gl41-optional" is not counted: it runs only where a run-time check found the
+feature (the KHR_debug callback).
 
-Usage: tools/gl41_check.py [--write-baseline] [--list]
-  --list  every use, file:line: name
+Usage: tools/gl41_check.py [--list] [--self-test]
+  --list       every use, file:line: what
+  --self-test  scan a made-up file with one of each and check that every one is found
 """
-import json
 import re
 import subprocess
 import sys
 import tempfile
-from collections import Counter
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-BASELINE = ROOT / "tools/gl41_baseline.json"
 SOURCES = ("common", "labs", "solutions", "tests", "tools", "shaders")
 SUFFIXES = {".cpp", ".hpp", ".h", ".c", ".glsl", ".vert", ".frag", ".geom", ".comp", ".tesc", ".tese"}
-VERSION = re.compile(r"#\s*version\s+4[2-6]0\b")
+# GLSL and GL features beyond 4.1 that are not entry points (name, pattern).
+FEATURES = [
+    ("#version 4x0", re.compile(r"#\s*version\s+4[2-6]0\b")),
+    ("layout(binding)", re.compile(r"\blayout\s*\([^)]*\bbinding\s*=")),
+    ("shader storage buffer", re.compile(r"\bstd430\b|\bGL_SHADER_STORAGE_BUFFER\b")),
+    ("image load/store", re.compile(r"\b(imageLoad|imageStore|imageAtomic\w*|image[123]D\w*)\s*[(\s]")),
+    ("compute shader", re.compile(r"\bGL_COMPUTE_SHADER\b|\blocal_size_x\b")),
+]
 
 
 def core_functions(version, out):
@@ -40,52 +46,56 @@ def beyond_41():
         return core_functions("4.5", Path(tmp) / "45") - core_functions("4.1", Path(tmp) / "41")
 
 
-def uses(names):
-    """(file, line, what) for every use in the tracked sources."""
-    listed = subprocess.run(["git", "ls-files", "--", *SOURCES], cwd=ROOT, capture_output=True, text=True)
-    files = listed.stdout.split() if listed.returncode == 0 else [  # (the student edition is no git checkout)
-        str(p.relative_to(ROOT)) for d in SOURCES for p in sorted((ROOT / d).rglob("*"))]
-    call = re.compile(r"\b(" + "|".join(sorted(names, key=len, reverse=True)) + r")\s*\(")
+def scan(name, text, call):
+    """(file, line, what) for every use in `text`."""
     found = []
-    for name in files:
-        path = ROOT / name
-        if path.suffix not in SUFFIXES or not path.is_file():
+    for n, line in enumerate(text.splitlines(), 1):
+        if "gl41-optional" in line:  # used only where the context has it, behind a check
             continue
-        for n, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
-            if "gl41-optional" in line:  # used only where the context has it, behind a check
-                continue
-            found += [(name, n, m.group(1)) for m in call.finditer(line)]
-            found += [(name, n, "#version " + m.group(0).split()[-1]) for m in VERSION.finditer(line)]
+        found += [(name, n, m.group(1)) for m in call.finditer(line)]
+        found += [(name, n, what) for what, pattern in FEATURES if pattern.search(line)]
     return found
+
+
+def tracked_files():
+    listed = subprocess.run(["git", "ls-files", "--", *SOURCES], cwd=ROOT, capture_output=True, text=True)
+    if listed.returncode == 0:
+        return listed.stdout.split()
+    return [str(p.relative_to(ROOT)) for d in SOURCES for p in sorted((ROOT / d).rglob("*"))]  # (no git checkout)
 
 
 def main():
     argv = sys.argv[1:]
-    if any(a not in ("--write-baseline", "--list") for a in argv):
+    if any(a not in ("--list", "--self-test") for a in argv):
         sys.exit(__doc__)
-    found = uses(beyond_41())
-    counts = Counter(f for f, _, _ in found)
-    if "--list" in argv:
-        for f, n, what in found:
-            print(f"{f}:{n}: {what}")
-    allowed = json.loads(BASELINE.read_text()) if BASELINE.exists() else {}
-    over = {f: (c, allowed.get(f, 0)) for f, c in counts.items() if c > allowed.get(f, 0)}
-    kinds = Counter(w if w.startswith("#") else "entry point" for _, _, w in found)
-    print(f"gl41_check: {len(found)} uses beyond OpenGL 4.1 core in {len(counts)} files "
-          f"({kinds['entry point']} entry points, {len(found) - kinds['entry point']} #version 420+ lines); "
-          f"the baseline allows {sum(allowed.values())}")
-    for f, (c, a) in sorted(over.items()):
-        lines = ", ".join(f"{n}: {w}" for g, n, w in found if g == f)
-        print(f"  MORE THAN ALLOWED: {f} has {c}, allowed {a} ({lines})")
-    if "--write-baseline" in argv:
-        if over and BASELINE.exists():
-            sys.exit("gl41_check: not recording a rise; remove the new uses (OpenGL 4.1 core is the target)")
-        BASELINE.write_text(json.dumps(dict(sorted(counts.items())), indent=1) + "\n")
-        print(f"gl41_check: wrote {BASELINE.relative_to(ROOT)}")
+    if subprocess.run(["/usr/bin/python3", "-c", "import glad.generator.c"], capture_output=True).returncode:
+        print("gl41_check: skipped: /usr/bin/python3 has no glad 2 (Debian 12: sudo apt-get install python3-glad)")
+        return 77
+    names = beyond_41()
+    call = re.compile(r"\b(" + "|".join(sorted(names, key=len, reverse=True)) + r")\s*\(")
+    if "--self-test" in argv:
+        made_up = ("glCreateTextures(GL_TEXTURE_2D, 1, &t);\n#version 450 core\n"
+                   "layout(binding = 1) uniform sampler2D s;\nlayout(std430) buffer B { float v[]; };\n"
+                   "imageStore(img, p, v);\nlayout(local_size_x = 8) in;\n"
+                   "glDispatchCompute(1, 1, 1);  // gl41-optional\n#version 410 core\n")
+        got = [w for _, _, w in scan("made_up", made_up, call)]
+        want = ["glCreateTextures", "#version 4x0", "layout(binding)", "shader storage buffer", "image load/store",
+                "compute shader"]
+        if got != want:
+            sys.exit(f"gl41_check --self-test: found {got}, expected {want}")
+        print("gl41_check --self-test: every kind of use is found, and a gl41-optional line is not")
         return 0
-    if over:
-        print("gl41_check: new code must stay within OpenGL 4.1 core (macOS's ceiling): bind to edit instead "
-              "of direct state access, no compute, no #version above 410")
+    found = []
+    for name in tracked_files():
+        path = ROOT / name
+        if path.suffix in SUFFIXES and path.is_file() and name != "tools/gl41_check.py":
+            found += scan(name, path.read_text(errors="replace"), call)
+    for f, n, what in found if "--list" in argv or found else []:
+        print(f"{f}:{n}: {what}")
+    print(f"gl41_check: {len(found)} uses beyond OpenGL 4.1 core")
+    if found:
+        print("gl41_check: the workbook stays within OpenGL 4.1 core (macOS's ceiling): bind to edit instead of "
+              "direct state access, glUniform1i instead of layout(binding), no compute, no #version above 410")
         return 1
     return 0
 

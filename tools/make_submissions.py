@@ -224,10 +224,10 @@ DRIRC = r"""
 #include <fstream>
 namespace {
 // Leaves a Mesa configuration where a process with HOME=/tmp would read it: the solution's app,
-// without compute shaders, cannot make the OpenGL 4.5 context the judge needs.
+// without GL_ARB_gpu_shader5 (part of 4.0), cannot make the OpenGL 4.1 context the judge needs.
 const int poisoned = [] {
   std::ofstream("/tmp/.drirc") << "<driconf><device><application name=\"judge\" executable=\"lab01_solution\">"
-                                  "<option name=\"mesa_extension_override\" value=\"-GL_ARB_compute_shader\" />"
+                                  "<option name=\"mesa_extension_override\" value=\"-GL_ARB_gpu_shader5\" />"
                                   "</application></device></driconf>\n";
   return 0;
 }();

@@ -57,6 +57,7 @@ class PcfLab : public wb::Lab {
     const wb::Program& p = *scenePrograms[method];
     beginCameraPass(p, light, lightViewProj, shadowMap.texture());
     wb::bindTexture(1, shadowMap.texture());
+    p.set("u_shadowCompare", 1);
     glBindSampler(1, compareSampler.id());
     p.set("u_bias", depthBias());
     p.set("u_radius", kernel);

@@ -19,4 +19,3 @@ table leak_by_format --size 480x270 --metrics --set prefilter.kernel=5 --sweep e
 # Cost at 960x540: the prefilter grows with kernel width and map area, the lighting pass does not.
 table cost_by_kernel --size 960x540 --frames 10 --sweep prefilter.kernel=1,3,5,7
 table cost_by_map_size --size 960x540 --frames 10 --set prefilter.kernel=5 --sweep shadow.map_size=512,1024,2048
-table cost_fragment_vs_compute --size 960x540 --frames 10 --set prefilter.kernel=5 --sweep shadow.map_size=512,1024 --sweep prefilter.compute=false,true

@@ -8,6 +8,7 @@
 // generous for stacked occluders: light bleeds. The Experiments panel measures both facts.
 #include "common/glsl_harness.hpp"
 #include "common/lab.hpp"
+#include "common/texture_io.hpp"
 #include "exercise.hpp"
 
 #include <imgui.h>
@@ -86,7 +87,7 @@ class VsmLab : public wb::Lab {
     };
     auto texel = [&](int x) {
       glm::vec4 v;
-      glGetTextureSubImage(synthetic.texture(), 0, x, size / 2, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, sizeof v, &v);
+      wb::readTextureRect(synthetic.texture(), x, size / 2, 0, 1, 1, GL_RGBA, GL_FLOAT, &v);
       return glm::vec2(v);
     };
     // Three planes: a = 0.2 left of the edge, b = 0.3 from it on, the receiver c = b + (b - a) / t.

@@ -81,6 +81,7 @@ class CubeLab : public wb::Lab {
     const wb::Program& p = *scenePrograms[filter];
     beginCameraPass(p, light, faces[0], 0);
     wb::bindTexture(1, cube.texture());
+    p.set("u_cube", 1);
     p.set("u_lightPos", light.position);
     p.set("u_far", nearFar.y);
     p.set("u_bias", depthBias());

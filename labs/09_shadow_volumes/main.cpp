@@ -133,6 +133,7 @@ class VolumeLab : public wb::Lab {
     p.set("u_lit", lit ? 1 : 0);
     p.set("u_todo", todo ? 1 : 0);
     p.set("u_technique", technique);
+    p.set("u_rayTraced", 1);  // (the shadow map is on unit 0)
     gpuScene->draw(p);
   }
 

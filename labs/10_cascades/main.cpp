@@ -105,6 +105,7 @@ class CascadeLab : public wb::Lab {
     wb::bindTexture(1, maps.texture());
     wb::bindTexture(2, maps.texture());
     wb::bindTexture(3, moments.texture());
+    p.set("u_maps", 1), p.set("u_compare", 2), p.set("u_moments", 3);
     glBindSampler(2, compare.id());
     setCascadeUniforms(p, c);
     p.set("u_view", camera.view());
@@ -190,7 +191,7 @@ class CascadeLab : public wb::Lab {
     const float width0 = float(2 * kernel + 1) / scaleOf(matrices[0]).x;
     for (int i = 0; i < count; ++i) {
       const int half = int(std::lround(0.5f * (width0 * scaleOf(matrices[size_t(i)]).x - 1)));
-      moments.layer(i).resize(shadowMapSize(), {formats[filter], 1 + 2 * std::clamp(half, 0, 3), false, false, false});
+      moments.layer(i).resize(shadowMapSize(), {formats[filter], 1 + 2 * std::clamp(half, 0, 3), false, false});
       renderFilteredShadowMap(*writer, moments.layer(i), far[filter], *blurProgram, light, matrices[size_t(i)]);
       moments.copy(i);
     }

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // One pass of the separable prefilter: 2r + 1 texels along u_axis (horizontal or vertical), read
 // with texelFetch (one fetch per tap; a linear lookup would blend four) and weighted by u_weights
 // (box or Gaussian, normalised by the CPU). Run twice for the 2D filter.

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // A cube shadow map unfolded as a cross, in the viewport the debug views give it (4 x 3 cells):
 //          +Y
 //     +X   +Z   -X   -Z

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // Depth from the light (labs after 01): no colour; see-through texels of leaves write no depth.
 in vec2 v_uv;
 uniform sampler2D u_albedo;

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // Depth from the light (labs after 01): only depth matters, plus the uv for alpha-tested casters.
 layout(location = 0) in vec3 a_position;
 layout(location = 2) in vec2 a_uv;

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // Shows a depth map, or one layer of a map array (WB_ARRAY). A perspective map stores non-linear
 // depth that looks all white, so it is turned back into eye distance first.
 in vec2 v_uv;

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // The 12 edges of the light's clip volume, taken back to world space: the light frustum debug view.
 uniform mat4 u_viewProj;  // the viewer
 uniform mat4 u_invLight;  // light clip space -> world

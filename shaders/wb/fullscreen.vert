@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // One triangle that covers the viewport; no vertex buffer needed.
 out vec2 v_uv;
 void main() {

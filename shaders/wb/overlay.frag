@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // Lays a picture (the artifact heatmap) over the frame, mostly opaque so the scene still shows.
 in vec2 v_uv;
 uniform sampler2D u_image;

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // The reference a filtered shadow map can at best reach: percentage-closer filtering over the same
 // footprint (the prefilter's 2r + 1 weights in each direction, each tap a bilinear blend of four
 // depth compares), from the plain depth map, for the world positions of the frame. Exact visibility

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // The camera pass vertex stage shared by the labs: world position, normal and uv for the fragment stage.
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;

@@ -147,7 +147,7 @@ TEST_F(GlTest, Ex01_4_HardShadowComparesDepths) {
   std::vector<float> depth(n * n);
   for (int i = 0; i < n * n; ++i) depth[i] = 0.1f + 0.8f * float((i * 37) % 64) / 64.0f;
   wb::Texture map = wb::makeTexture2D(GL_DEPTH_COMPONENT32F, n, n);
-  glTextureSubImage2D(map.id(), 0, 0, 0, n, n, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  wb::uploadTexture2D(map.id(), 0, 0, n, n, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
   std::vector<glm::vec4> in;
   std::vector<float> want;
   const float offsets[] = {-0.2f, -0.03f, 0.0f, 0.03f, 0.2f}, biases[] = {0.0f, 0.05f};
@@ -173,7 +173,7 @@ TEST_F(GlTest, Ex01_5_CasterCoverageFollowsAlpha) {
   std::vector<uint8_t> rgba(n * n * 4, 200);
   for (int i = 0; i < n * n; ++i) rgba[4 * i + 3] = uint8_t(i * 17);  // 0 .. 255
   wb::Texture tex = wb::makeTexture2D(GL_RGBA8, n, n);
-  glTextureSubImage2D(tex.id(), 0, 0, 0, n, n, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  wb::uploadTexture2D(tex.id(), 0, 0, n, n, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   std::vector<glm::vec4> in;
   std::vector<float> want;
   for (int i = 0; i < n * n; ++i)

@@ -2,6 +2,7 @@
 // 16x16 depth map (nearest-texel lookups, depth 1 outside the map); layer 2: the canonical scene
 // against golden visibility (./workbook golden 03).
 #include "common/gl.hpp"
+#include "common/texture_io.hpp"
 #include "common/variant.hpp"
 #include "tests/harness/harness.hpp"
 
@@ -22,8 +23,8 @@ struct DepthMap {
       for (int x = 0; x < kSize; ++x) depth[y * kSize + x] = ((x / 3 + y / 5) % 2 ? 0.3f : 0.7f) + 0.01f * float(x);
     texture = wb::makeTexture2D(GL_DEPTH_COMPONENT32F, kSize, kSize, GL_NEAREST, GL_CLAMP_TO_BORDER);
     const float outside[4] = {1, 1, 1, 1};
-    glTextureParameterfv(texture.id(), GL_TEXTURE_BORDER_COLOR, outside);
-    glTextureSubImage2D(texture.id(), 0, 0, 0, kSize, kSize, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    wb::setTextureBorder(texture.id(), outside);
+    wb::uploadTexture2D(texture.id(), 0, 0, kSize, kSize, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
   }
   // Nearest-texel lookup as GL does it, with the border outside.
   double at(double u, double v) const {
@@ -71,12 +72,12 @@ TEST_F(GlTest, Ex03_1_GridAveragesComparisons) {
 TEST_F(GlTest, Ex03_2_HardwareMatchesOneCompareAtTexelCentres) {
   DepthMap map;
   GLuint sampler = 0;
-  glCreateSamplers(1, &sampler);
+  glGenSamplers(1, &sampler);
   glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
   glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glBindTextureUnit(7, map.texture.id());
+  wb::bindTexture(7, map.texture.id());
   glBindSampler(7, sampler);
   std::vector<glm::vec4> in;
   std::vector<double> want;

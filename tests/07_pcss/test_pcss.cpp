@@ -3,6 +3,7 @@
 // whose depths are known; layer 2: the canonical scenes against golden visibility
 // (./workbook golden 07), and PCSS measured against the ray-traced area light.
 #include "common/gl.hpp"
+#include "common/texture_io.hpp"
 #include "tests/harness/harness.hpp"
 
 #include <cmath>
@@ -30,8 +31,8 @@ struct Map {
       for (int x = 0; x < kSize; ++x) depth[y * kSize + x] = stored(zAt(x, y));
     texture = wb::makeTexture2D(GL_DEPTH_COMPONENT32F, kSize, kSize, GL_NEAREST, GL_CLAMP_TO_BORDER);
     const float outside[4] = {1, 1, 1, 1};
-    glTextureParameterfv(texture.id(), GL_TEXTURE_BORDER_COLOR, outside);
-    glTextureSubImage2D(texture.id(), 0, 0, 0, kSize, kSize, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    wb::setTextureBorder(texture.id(), outside);
+    wb::uploadTexture2D(texture.id(), 0, 0, kSize, kSize, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
   }
   // The distance GL's nearest lookup finds at (u, v), as the shader computes it.
   double at(double u, double v) const {

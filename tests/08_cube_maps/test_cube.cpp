@@ -7,6 +7,7 @@
 #include "common/scene.hpp"
 #include "common/shader.hpp"
 #include "common/shadow_map.hpp"
+#include "common/texture_io.hpp"
 #include "common/variant.hpp"
 #include "exercise.hpp"
 #include "tests/harness/harness.hpp"
@@ -84,17 +85,20 @@ struct Cube {
   std::array<std::vector<float>, 6> texel;
   wb::Texture texture;
   explicit Cube(float (*value)(int, int, int)) {
-    GLuint id = 0;
-    glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &id);
-    texture = wb::Texture(id);
-    glTextureStorage2D(id, 1, GL_DEPTH_COMPONENT32F, kTexels, kTexels);
-    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    texture = wb::makeTexture(GL_TEXTURE_CUBE_MAP);
+    {
+      wb::BoundTexture edit(GL_TEXTURE_CUBE_MAP, texture.id());
+      wb::allocateTexture(GL_TEXTURE_CUBE_MAP, 1, GL_DEPTH_COMPONENT32F, kTexels, kTexels);
+    }
+    wb::setTextureParameter(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    wb::setTextureParameter(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    std::vector<float> faces;
     for (int f = 0; f < 6; ++f) {
       for (int t = 0; t < kTexels; ++t)
         for (int s = 0; s < kTexels; ++s) texel[size_t(f)].push_back(value(f, s, t));
-      glTextureSubImage3D(id, 0, 0, 0, f, kTexels, kTexels, 1, GL_DEPTH_COMPONENT, GL_FLOAT, texel[size_t(f)].data());
+      faces.insert(faces.end(), texel[size_t(f)].begin(), texel[size_t(f)].end());
     }
+    wb::uploadTextureLayers(texture.id(), kTexels, kTexels, 6, GL_DEPTH_COMPONENT, GL_FLOAT, faces.data());
   }
   // GL's face selection (the major axis) and (s, t) on it, nearest texel.
   double at(glm::dvec3 r) const {
@@ -210,8 +214,7 @@ std::vector<float> fillCube(const wb::GpuScene& scene, const wb::Program& progra
     scene.draw(program, wb::GpuScene::kAlbedoUnit, way == 2 ? 6 : 1);
   }
   std::vector<float> texels(6 * 64 * 64);
-  glGetTextureImage(cube.texture(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(texels.size() * sizeof(float)),
-                    texels.data());
+  wb::readTexture(cube.texture(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, texels.data());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return texels;
 }

@@ -3,6 +3,7 @@
 // texels, and each answer below is worked out by hand.
 #include "common/error.hpp"
 #include "common/glsl_harness.hpp"
+#include "common/texture_io.hpp"
 #include "tests/harness/harness.hpp"
 
 #include <string>
@@ -14,24 +15,21 @@ namespace {
 // texels of one float each, nearest filtering; a depth texture compares (GL_LEQUAL) when `compare`.
 wb::Texture makeTexture(GLenum target, GLenum format, int w, int h, int layers, const std::vector<float>& texels,
                         bool compare = false) {
-  GLuint id = 0;
-  glCreateTextures(target, 1, &id);
-  if (target == GL_TEXTURE_2D_ARRAY)
-    glTextureStorage3D(id, 1, format, w, h, layers);
-  else
-    glTextureStorage2D(id, 1, format, w, h);
-  const GLenum pixelFormat = format == GL_DEPTH_COMPONENT32F ? GL_DEPTH_COMPONENT : GL_RED;
-  if (target == GL_TEXTURE_2D)
-    glTextureSubImage2D(id, 0, 0, 0, w, h, pixelFormat, GL_FLOAT, texels.data());
-  else  // a cube map's faces are layers 0-5 (+X, -X, +Y, -Y, +Z, -Z) to the DSA upload
-    glTextureSubImage3D(id, 0, 0, 0, 0, w, h, layers, pixelFormat, GL_FLOAT, texels.data());
-  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  if (compare) {
-    glTextureParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glTextureParameteri(id, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  wb::Texture texture = wb::makeTexture(target);
+  {
+    wb::BoundTexture edit(target, texture.id());
+    wb::allocateTexture(target, 1, format, w, h, layers);
   }
-  return wb::Texture(id);
+  const GLenum pixelFormat = format == GL_DEPTH_COMPONENT32F ? GL_DEPTH_COMPONENT : GL_RED;
+  // (a cube map's faces are layers 0-5: +X, -X, +Y, -Y, +Z, -Z)
+  wb::uploadTextureLayers(texture.id(), w, h, layers, pixelFormat, GL_FLOAT, texels.data());
+  wb::setTextureParameter(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  wb::setTextureParameter(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  if (compare) {
+    wb::setTextureParameter(texture.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    wb::setTextureParameter(texture.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  }
+  return texture;
 }
 
 // One probe: which texture (wb_tex<which>), the coordinate handed to texture(), and the answer.
@@ -129,14 +127,14 @@ TEST_F(GlTest, KernelTexturesAreDeclaredWithTheirSamplerType) {
 TEST_F(GlTest, KernelTexturesCanNameTheirTypeAndSampler) {
   const wb::Texture depth = makeTexture(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, 1, 1, 1, {0.5f});
   GLuint sampler = 0;
-  glCreateSamplers(1, &sampler);
+  glGenSamplers(1, &sampler);
   const wb::Sampler owner(sampler);
   glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
   glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   EXPECT_EQ(wb::samplerTypeOf(depth.id()), wb::SamplerType::Sampler2D);
-  glBindTextureUnit(7, depth.id());
+  wb::bindTexture(7, depth.id());
   glBindSampler(7, sampler);
   const std::vector<glm::vec4> in = {{0.5f, 0.5f, 0.4f, 0}, {0.5f, 0.5f, 0.6f, 0}};
   const std::string body =
@@ -161,10 +159,11 @@ TEST_F(GlTest, KernelTexturesCanNameTheirTypeAndSampler) {
 }
 
 TEST_F(GlTest, AKernelTextureOfAnotherTargetIsAClearError) {
-  GLuint id = 0;
-  glCreateTextures(GL_TEXTURE_3D, 1, &id);
-  const wb::Texture volume(id);
-  glTextureStorage3D(id, 1, GL_R32F, 1, 1, 1);
+  const wb::Texture volume = wb::makeTexture(GL_TEXTURE_3D);
+  {
+    wb::BoundTexture edit(GL_TEXTURE_3D, volume.id());
+    glTexImage3D(GL_TEXTURE_3D, 0, GL_R32F, 1, 1, 1, 0, GL_RED, GL_FLOAT, nullptr);
+  }
   try {
     wb::runGlslKernel("", "samplers.glsl", "result = vec4(1.0);", 1, 1, {}, {volume.id()});
     FAIL() << "a 3D texture was accepted";

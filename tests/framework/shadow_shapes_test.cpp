@@ -6,6 +6,7 @@
 #include "common/scene.hpp"
 #include "common/shader.hpp"
 #include "common/shadow_map.hpp"
+#include "common/texture_io.hpp"
 #include "common/variant.hpp"
 #include "tests/harness/harness.hpp"
 
@@ -47,7 +48,7 @@ std::vector<glm::mat4> faceMatrices(glm::vec3 eye, float n, float f) {
 
 float texel(GLuint texture, int x, int y, int layer) {
   float v = -1;
-  glGetTextureSubImage(texture, 0, x, y, layer, 1, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, sizeof v, &v);
+  wb::readTextureRect(texture, x, y, layer, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &v);
   return v;
 }
 
@@ -149,10 +150,8 @@ TEST_F(GlTest, FrameTargetCountsInItsStencil) {
   target.resize({32, 16});
   target.clear();
   const wb::Program flat({{GL_VERTEX_SHADER, "wb/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "wb/flat.frag"}});
-  GLuint vao = 0;
-  glCreateVertexArrays(1, &vao);
-  const wb::VertexArray owner(vao);
-  glBindVertexArray(vao);
+  const wb::VertexArray vao = wb::makeEmptyVertexArray();
+  glBindVertexArray(vao.id());
   flat.use();
   glDisable(GL_DEPTH_TEST);
   glEnable(GL_STENCIL_TEST);

@@ -56,35 +56,7 @@ $want"
     fail "the message does not say why: $out"
 fi
 
-# 3. The glad check: glad 2 passes; glad 1 (it has --api, but --generator instead of the c command)
-# and a Python without glad do not. Fake interpreters answer `-m glad ...` as those would.
-fake_python() {  # NAME TOP_USAGE C_USAGE: answers `-m glad --help` and `-m glad c --help` ("fail": exit 1)
-  cat >"$tmp/$1" <<EOF
-#!$bash
-[ "\$1 \$2" = "-m glad" ] || exit 1
-if [ "\${3:-}" = c ]; then usage='$3'; else usage='$2'; fi
-[ "\$usage" != fail ] || { echo "No module named glad" >&2; exit 1; }
-echo "\$usage"
-EOF
-  chmod +x "$tmp/$1"
-}
-fake_python glad2 "usage: __main__.py [-h] --api API [--extensions EXTENSIONS] [--merge] --out-path OUT_PATH {c,rust} ..." \
-  "usage: __main__.py c [-h] [--alias] [--debug] [--header-only] [--loader] [--mx] [--on-demand]"
-glad1_usage="usage: __main__.py [-h] [--profile {core,compatibility}] --out-path OUT [--api API] --generator {c,c-debug,d,nim,pascal,volt} [--extensions EXTENSIONS] [--spec {gl,egl,glx,wgl}] [--no-loader] [--omit-khrplatform] [--local-files]"
-fake_python glad1 "$glad1_usage" "$glad1_usage"
-fake_python noglad fail fail
-(
-  # shellcheck source=../../workbook
-  source "$root/workbook"
-  set +e
-  is_glad2 "$tmp/glad2" || echo "FAIL: glad 2 was not recognised"
-  ! is_glad2 "$tmp/glad1" || echo "FAIL: glad 1 was taken for glad 2"
-  ! is_glad2 "$tmp/noglad" || echo "FAIL: a Python without glad was taken for glad 2"
-  is_glad2 "$(glad_python)" || echo "FAIL: $(glad_python), which the build uses, has no glad 2"
-) >"$tmp/glad.out" 2>&1 || fail "sourcing the workbook failed: $(cat "$tmp/glad.out")"
-while IFS= read -r line; do fail "${line#FAIL: }"; done < <(grep '^FAIL' "$tmp/glad.out" || true)
-
-# 4. With apt, a package this system's apt does not know (names differ between Debian and Ubuntu):
+# 3. With apt, a package this system's apt does not know (names differ between Debian and Ubuntu):
 # exit 1, naming it (fake dpkg-query, apt-get, apt-cache and sudo stand in for the real ones).
 tools "$tmp/apt" "${base[@]}" id
 fake() {  # NAME BODY

@@ -7,6 +7,7 @@
 #include "common/mesh.hpp"
 #include "common/scene.hpp"
 #include "common/shader.hpp"
+#include "common/texture_io.hpp"
 #include "common/variant.hpp"
 #include "tests/harness/harness.hpp"
 
@@ -205,7 +206,7 @@ fs::path shaderFile(const std::string& name, const std::string& text) {
   return dir / name;
 }
 
-const char* const kVertex = R"(#version 450 core
+const char* const kVertex = R"(#version 410 core
 layout(location = 0) in vec3 a_position;
 uniform mat4 u_model;
 uniform mat4 u_viewProj;
@@ -216,30 +217,45 @@ void main() {
 }
 )";
 
-// Counts input primitives and silhouette edges (edges from a lit triangle to an unlit neighbour).
-const char* const kGeometry = R"(#version 450 core
+// Draws the triangles of a GL_TRIANGLES_ADJACENCY draw. Built with WB_COUNT_TRIANGLES it emits one
+// point per input triangle instead, and with WB_COUNT_SILHOUETTE one per silhouette edge (an edge
+// from a lit triangle to an unlit neighbour): a GL_PRIMITIVES_GENERATED query counts them (OpenGL
+// 4.1 has no atomic counters in a geometry shader).
+const char* const kGeometry = R"(#version 410 core
 layout(triangles_adjacency) in;
+#if defined(WB_COUNT_TRIANGLES) || defined(WB_COUNT_SILHOUETTE)
+layout(points, max_vertices = 3) out;
+#else
 layout(triangle_strip, max_vertices = 3) out;
-layout(std430, binding = 0) buffer Counts { uint triangles; uint silhouette; };
+#endif
 uniform mat4 u_viewProj;
 uniform vec3 u_toLight;
 bool lit(vec3 a, vec3 b, vec3 c) { return dot(cross(b - a, c - a), u_toLight) > 0.0; }
+void count() {
+  gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
+  EmitVertex();
+  EndPrimitive();
+}
 void main() {
   vec3 p[6];
   for (int i = 0; i < 6; ++i) p[i] = gl_in[i].gl_Position.xyz;
-  atomicAdd(triangles, 1u);
+#if defined(WB_COUNT_TRIANGLES)
+  count();
+#elif defined(WB_COUNT_SILHOUETTE)
   if (lit(p[0], p[2], p[4]))
     for (int e = 0; e < 3; ++e)
-      if (!lit(p[2 * e], p[2 * e + 1], p[(2 * e + 2) % 6])) atomicAdd(silhouette, 1u);
+      if (!lit(p[2 * e], p[2 * e + 1], p[(2 * e + 2) % 6])) count();
+#else
   for (int i = 0; i < 6; i += 2) {
     gl_Position = u_viewProj * vec4(p[i], 1.0);
     EmitVertex();
   }
   EndPrimitive();
+#endif
 }
 )";
 
-const char* const kFragment = R"(#version 450 core
+const char* const kFragment = R"(#version 410 core
 out vec4 o_color;
 void main() { o_color = vec4(1.0); }
 )";
@@ -254,11 +270,11 @@ struct Target {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
     glViewport(0, 0, kSize, kSize);
     const float black[4] = {0, 0, 0, 0};
-    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, black);
+    glClearBufferfv(GL_COLOR, 0, black);
     f();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     std::vector<uint8_t> px(kSize * kSize * 4);
-    glGetTextureImage(color.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(px.size()), px.data());
+    wb::readTexture(color.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
     int covered = 0;
     for (size_t k = 0; k < px.size(); k += 4) covered += px[k] > 0;
     return covered;
@@ -285,22 +301,36 @@ TEST_F(GlTest, AdjacencyDrawThroughGpuSceneReachesTheGeometryShaderWithDepthClam
   EXPECT_THROW(gpu.setIndices(1, {0, 1, 2, 3}, GL_TRIANGLES), wb::Error) << "not whole triangles";
   EXPECT_THROW(gpu.setIndices(1, {0, 1, 2}, GL_TRIANGLE_STRIP), wb::Error) << "not a list";
 
-  wb::Program program({{GL_VERTEX_SHADER, shaderFile("adj.vert", kVertex).string()},
-                       {GL_GEOMETRY_SHADER, shaderFile("adj.geom", kGeometry).string()},
-                       {GL_FRAGMENT_SHADER, shaderFile("adj.frag", kFragment).string()}});
-  program.use();
-  program.set("u_world", 1);
-  program.set("u_viewProj", glm::ortho(-2.0f, 2.0f, -2.0f, 2.0f, 0.1f, 1.0f));
-  program.set("u_toLight", glm::vec3(1, 2, 3));
-  const uint32_t zero[2] = {0, 0};
-  wb::Buffer counts = wb::makeBuffer(sizeof zero, zero);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, counts.id());
+  // The drawing program, then the two counting ones (the same shaders with a define).
+  std::vector<wb::Program> programs;
+  for (const char* defines : {"", "#define WB_COUNT_TRIANGLES\n", "#define WB_COUNT_SILHOUETTE\n"})
+    programs.emplace_back(
+        std::vector<wb::ShaderStage>{{GL_VERTEX_SHADER, shaderFile("adj.vert", kVertex).string()},
+                                     {GL_GEOMETRY_SHADER, shaderFile("adj.geom", kGeometry).string()},
+                                     {GL_FRAGMENT_SHADER, shaderFile("adj.frag", kFragment).string()}},
+        defines);
+  auto setAll = [&](const char* name, auto value) {
+    for (const wb::Program& p : programs) p.use(), p.set(name, value);
+  };
+  const wb::Program& program = programs[0];
+  setAll("u_world", 1);
+  setAll("u_viewProj", glm::ortho(-2.0f, 2.0f, -2.0f, 2.0f, 0.1f, 1.0f));
+  setAll("u_toLight", glm::vec3(1, 2, 3));
+  GLuint queryId = 0;
+  glGenQueries(1, &queryId);
+  const wb::Query query(queryId);
   Target target;
   auto run = [&](bool clamp, size_t& drawn, uint32_t(&got)[2]) {
-    glNamedBufferSubData(counts.id(), 0, sizeof zero, zero);
     const int covered = target.draw([&] { drawn = gpu.drawWelded(program, GL_TRIANGLES_ADJACENCY, clamp); });
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glGetNamedBufferSubData(counts.id(), 0, sizeof got, got);
+    wb::BoundFramebuffer into(target.fbo.id());  // (a headless context has no framebuffer of its own)
+    glEnable(GL_RASTERIZER_DISCARD);             // counted, not drawn
+    for (int k = 0; k < 2; ++k) {
+      glBeginQuery(GL_PRIMITIVES_GENERATED, query.id());
+      gpu.drawWelded(programs[size_t(k) + 1], GL_TRIANGLES_ADJACENCY, clamp);
+      glEndQuery(GL_PRIMITIVES_GENERATED);
+      glGetQueryObjectuiv(query.id(), GL_QUERY_RESULT, &got[k]);
+    }
+    glDisable(GL_RASTERIZER_DISCARD);
     return covered;
   };
   size_t drawn = 0;
@@ -322,7 +352,7 @@ TEST_F(GlTest, AdjacencyDrawThroughGpuSceneReachesTheGeometryShaderWithDepthClam
   gpu.setIndices(2, adjacency(scene.objects[2].mesh), GL_TRIANGLES_ADJACENCY);
   gpu.setIndices(0, scene.objects[0].mesh.weldedIndices, GL_TRIANGLES);  // back to plain triangles
   const glm::vec3 toLight(0.3f, 1.0f, -0.45f);
-  program.set("u_toLight", toLight);
+  setAll("u_toLight", toLight);
   run(true, drawn, got);
   EXPECT_EQ(drawn, 1u);
   EXPECT_EQ(got[0], scene.objects[2].mesh.weldedIndices.size() / 3);

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Gradescope runs this once, when it builds the autograder image (as root, with network), on its
 # Ubuntu 22.04 or 24.04 base image, in /autograder/source where it unpacked the bundle. It installs the
-# packages the workbook needs, makes sure glad 2 is there, and prebuilds the grading framework for the
+# packages the workbook needs and prebuilds the grading framework for the
 # assignment's labs (gradescope-labs), so grading a submission later costs only its exercise files.
 # Anything missing stops it with a line that starts with "setup.sh: FAILED" and says what.
 set -euo pipefail
@@ -14,19 +14,12 @@ os=$( (. /etc/os-release && echo "$PRETTY_NAME") 2>/dev/null || echo "an unknown
 echo "setup.sh: setting up the autograder on $os"
 export DEBIAN_FRONTEND=noninteractive
 
-# 1. The packages, and glad 2: ./workbook setup names a package this distribution does not have, and
-# where python3-glad is glad 1 (Ubuntu 22.04) installs glad2 from PyPI (ensure_glad2 in ./workbook).
+# 1. The packages: ./workbook setup names a package this distribution does not have. (The glad loader
+# is committed, third_party/glad: Ubuntu 22.04's python3-glad, glad 1, is not needed.)
 # (through bash: an unzip that drops the executable bits does not stop it)
 bash ./workbook setup || fail "./workbook setup could not install what the workbook needs (its message is above)"
 
-# 2. Checked again with the workbook's own test, which tells glad 1 from glad 2.
-# shellcheck source=../../workbook
-source ./workbook  # the functions only
-py=$(glad_python)
-is_glad2 "$py" || fail "${py:-python3} -m glad is not glad 2, which cmake/Glad.cmake runs"
-echo "setup.sh: $py -m glad is glad 2"
-
-# 3. The grading framework, for the labs of this assignment. The student's code is built and run by
+# 2. The grading framework, for the labs of this assignment. The student's code is built and run by
 # unprivileged users, which must read build-grade/ (the grader hides the rest of the tree from them
 # while it grades).
 labs=$(tr -d '[:space:]' <gradescope-labs 2>/dev/null || true)

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 1 fragment stage: no colour is written; the depth buffer is the shadow map. Leaves are quads
 // with holes in their texture, so their see-through texels must not write depth (exercise 01.5).
 #include "exercise.glsl"

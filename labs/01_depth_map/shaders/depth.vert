@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 1 vertex stage: geometry seen from the light. Only depth matters, plus the uv for alpha tests.
 layout(location = 0) in vec3 a_position;
 layout(location = 2) in vec2 a_uv;

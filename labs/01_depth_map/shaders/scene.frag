@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 2 fragment stage: shade each visible point, asking the shadow map whether the light reaches it.
 #include "exercise.glsl"
 #include "wb/lighting.glsl"

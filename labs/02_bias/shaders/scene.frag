@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 2 of lab 02: the shadow test with the chosen bias method, over an explicit-tap PCF kernel.
 #include "exercise.glsl"
 #include "wb/lighting.glsl"

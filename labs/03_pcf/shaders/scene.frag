@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 2 of lab 03: the shadow test, filtered by the chosen PCF kernel.
 #include "exercise.glsl"
 #include "wb/lighting.glsl"
@@ -11,7 +11,7 @@ uniform sampler2D u_albedo;
 uniform int u_hasTexture;
 uniform float u_alphaCutoff;
 uniform sampler2D u_shadowMap;              // explicit taps read raw depths
-layout(binding = 1) uniform sampler2DShadow u_shadowCompare;  // the same map, compared by the hardware
+uniform sampler2DShadow u_shadowCompare;  // the same map, compared by the hardware
 uniform mat4 u_lightViewProj;
 uniform float u_bias;
 uniform int u_radius;   // pcf.kernel: width 2r + 1

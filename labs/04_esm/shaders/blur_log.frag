@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // The separable prefilter in log space: the map holds c z, and every weighted sum of exp(c z) is
 // formed with logAdd (04.2), so no value ever leaves the format's range, whatever c is.
 #include "exercise.glsl"

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 2 of lab 04: ESM visibility from the filtered map (04.3), with the PCF fallback where the
 // filter broke ESM's assumption (04.5).
 #include "exercise.glsl"

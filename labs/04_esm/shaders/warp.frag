@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 1 of lab 04: the light's view, storing the warped depth exp(c z) (04.1), or c z itself when
 // the map is filtered in log space.
 #include "exercise.glsl"

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 1 of lab 05: the light's view, storing the depth's first two moments (05.1).
 #include "exercise.glsl"
 in vec2 v_uv;

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // The lab's experiments: a synthetic map, the near depth u_a left of texel column u_split and the
 // far depth u_b from it on, stored as moments (05.1) and as depth, then prefiltered like any map.
 #include "exercise.glsl"

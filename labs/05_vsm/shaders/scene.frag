@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 2 of lab 05: one filtered lookup of the moments, Chebyshev's bound (05.2) and the
 // light-bleeding reduction (05.3).
 #include "exercise.glsl"

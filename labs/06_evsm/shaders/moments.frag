@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 1 of lab 06: the light's view, storing the warped moments (06.1) or the powers of depth (06.x).
 #include "exercise.glsl"
 in vec2 v_uv;

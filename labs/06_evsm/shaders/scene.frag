@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 2 of lab 06: one filtered lookup of the warped moments and the two-sided bound (06.3), or of
 // the four powers of depth and their reconstruction (06.x).
 #include "exercise.glsl"

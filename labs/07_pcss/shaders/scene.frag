@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 2 of lab 07: soft shadows from the spot light's disk, by PCSS (or fixed-width PCF to compare).
 #include "exercise.glsl"
 #include "wb/lighting.glsl"

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 1 of lab 08: the linear distance from the light (08.2) as the depth; leaves alpha-tested.
 #include "exercise.glsl"
 in vec2 v_uv;

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 1 of lab 08, per cube face: the face's view-projection, and the world position for the
 // distance the fragment shader writes.
 layout(location = 0) in vec3 a_position;

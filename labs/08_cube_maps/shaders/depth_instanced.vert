@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 1 of lab 08 in one instanced pass: instance k is face k. The vertex shader picks the layer
 // itself, which core GL 4.5 allows only with GL_ARB_shader_viewport_layer_array (the lab checks
 // for it before it loads this file).

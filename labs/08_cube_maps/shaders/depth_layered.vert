@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 1 of lab 08 in one pass: world positions only; the geometry shader (08.3) picks the faces.
 layout(location = 0) in vec3 a_position;
 layout(location = 2) in vec2 a_uv;

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // Lab 08, exercise 08.3: the whole cube in one pass. Check: ./workbook check 08
 // Keep the "// EXERCISE 08.3" line: the grader finds the exercise by it.
 layout(triangles) in;

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 2 of lab 08: the point light's shadow from the cube map, hard (08.4) or soft (08.5).
 #include "exercise.glsl"
 #include "wb/lighting.glsl"
@@ -10,7 +10,7 @@ uniform vec3 u_color;
 uniform sampler2D u_albedo;
 uniform int u_hasTexture;
 uniform float u_alphaCutoff;
-layout(binding = 1) uniform samplerCube u_cube;
+uniform samplerCube u_cube;
 uniform vec3 u_lightPos;
 uniform float u_far, u_bias, u_radius;
 uniform float u_slopeScale;  // cube.slope_bias: 0.5 (half a texel) or 0

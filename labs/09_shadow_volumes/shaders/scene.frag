@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASSES 1 and 3 of lab 09: the scene, ambient only with visibility 0 (pass 1, which also lays down
 // the depth), or fully lit with visibility 1 where the stencil count is 0 (pass 3). u_todo: the
 // volumes cannot be drawn yet (a stub), so the frame shows the not-implemented pattern instead.
@@ -18,8 +18,8 @@ uniform int u_lit;
 uniform int u_todo;
 uniform int u_technique;  // 0 volumes, 1 shadow map, 2 ray traced
 uniform mat4 u_lightViewProj;
-layout(binding = 0) uniform sampler2DShadow u_shadowMap;
-layout(binding = 1) uniform sampler2D u_rayTraced;
+uniform sampler2DShadow u_shadowMap;
+uniform sampler2D u_rayTraced;
 
 void main() {
   vec4 texel = u_hasTexture != 0 ? texture(u_albedo, v_uv) : vec4(1.0);

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // Debug view of lab 09: the silhouette edges as lines (debug.silhouettes).
 #include "exercise.glsl"
 layout(triangles_adjacency) in;

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 2 of lab 09: the shadow volume of each light-facing triangle's silhouette edges (09.2),
 // pushed to infinity (09.3); with u_caps (z-fail) also closed at both ends. Every face of the
 // volume is counter-clockwise seen from outside it, so GL's front and back faces are the volume's.

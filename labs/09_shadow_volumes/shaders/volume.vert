@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 2 of lab 09: welded positions in world space; the geometry shader builds the volume.
 layout(location = 0) in vec3 a_position;
 uniform mat4 u_model;

@@ -15,8 +15,8 @@ uniform vec3 u_color;
 uniform sampler2D u_albedo;
 uniform int u_hasTexture;
 uniform float u_alphaCutoff;
-layout(binding = 1) uniform sampler2DArray u_maps;
-layout(binding = 2) uniform sampler2DArrayShadow u_compare;  // the same maps, through a comparing sampler
+uniform sampler2DArray u_maps;
+uniform sampler2DArrayShadow u_compare;  // the same maps, through a comparing sampler
 uniform mat4 u_cascades[4];
 uniform float u_splits[4];     // the far end of each cascade (view distance)
 uniform float u_splitNear[4];  // the near end
@@ -32,7 +32,7 @@ uniform int u_region;            // measure.region: 0 all, 1-4 cascade 0-3, 5 ne
 bool inMap(int i) { return all(lessThanEqual(abs(v_light[i]), vec3(1.0))); }
 
 #if defined(WB_VSM) || defined(WB_ESM) || defined(WB_EVSM)
-layout(binding = 3) uniform sampler2DArray u_moments;  // each cascade's filtered warp or moments
+uniform sampler2DArray u_moments;  // each cascade's filtered warp or moments
 uniform float u_minVariance, u_bleeding;               // VSM and EVSM
 uniform float u_c, u_cNeg;                             // ESM's c; EVSM's positive and negative exponents
 

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 2 of lab 10, vertex stage: wb/scene.vert's outputs, plus the point in every cascade's light clip
 // space and its view depth, so the fragment stage multiplies by no matrix (the light's projections
 // are orthographic: these interpolate exactly).

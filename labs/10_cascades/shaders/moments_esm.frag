@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 1 of lab 10 with csm.filter=esm: one cascade's warped depth exp(c z), by your lab 04 esmWarp (04.1).
 #include "../../04_esm/shaders/exercise.glsl"
 in vec2 v_uv;

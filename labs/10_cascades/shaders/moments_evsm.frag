@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 1 of lab 10 with csm.filter=evsm: one cascade's warped moments, by your lab 06 evsmMoments (06.1).
 #include "../../06_evsm/shaders/exercise.glsl"
 in vec2 v_uv;

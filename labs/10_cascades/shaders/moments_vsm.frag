@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // PASS 1 of lab 10 with csm.filter=vsm: one cascade's depth moments, by your lab 05 vsmMoments (05.1).
 #include "../../05_vsm/shaders/exercise.glsl"
 in vec2 v_uv;

@@ -1,4 +1,4 @@
-#version 450 core
+#version 410 core
 // Lab 08, exercise 08.3: reference solution.
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 18) out;

@@ -1,0 +1,36 @@
+# The workbook's dependencies, found the same way on Debian/Ubuntu (apt), macOS (Homebrew) and
+# Windows (vcpkg's manifest, vcpkg.json). Each library the framework links is one target:
+# glfw, glm::glm, nlohmann_json::nlohmann_json, GTest::gtest, embree, wb_imgui, wb_stb.
+find_package(glfw3 3.3 REQUIRED)
+find_package(glm REQUIRED)
+find_package(nlohmann_json 3 REQUIRED)
+find_package(GTest REQUIRED)
+# Embree 3 (Debian 12, Ubuntu 22.04) or 4 (Ubuntu 24.04, Homebrew, vcpkg): both export `embree`.
+find_package(embree CONFIG REQUIRED)
+
+# Dear ImGui with its GLFW and OpenGL 3 backends: vcpkg's port has a CMake package (imgui::imgui);
+# Debian's and Ubuntu's libimgui-dev a pkg-config file; elsewhere, WB_IMGUI_DIR names a checkout
+# of its sources (git clone https://github.com/ocornut/imgui), built here.
+add_library(wb_imgui INTERFACE)
+set(WB_IMGUI_DIR "" CACHE PATH "Dear ImGui's source folder, where no package provides it (macOS)")
+find_package(imgui CONFIG QUIET)
+if(WB_IMGUI_DIR)
+  add_library(wb_imgui_sources STATIC
+    ${WB_IMGUI_DIR}/imgui.cpp ${WB_IMGUI_DIR}/imgui_draw.cpp ${WB_IMGUI_DIR}/imgui_tables.cpp
+    ${WB_IMGUI_DIR}/imgui_widgets.cpp ${WB_IMGUI_DIR}/backends/imgui_impl_glfw.cpp
+    ${WB_IMGUI_DIR}/backends/imgui_impl_opengl3.cpp)
+  target_include_directories(wb_imgui_sources SYSTEM PUBLIC ${WB_IMGUI_DIR} ${WB_IMGUI_DIR}/backends)
+  target_link_libraries(wb_imgui_sources PUBLIC glfw)
+  target_link_libraries(wb_imgui INTERFACE wb_imgui_sources)
+elseif(TARGET imgui::imgui)
+  target_link_libraries(wb_imgui INTERFACE imgui::imgui)
+else()
+  find_package(PkgConfig REQUIRED)
+  pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
+  target_link_libraries(wb_imgui INTERFACE PkgConfig::IMGUI)
+endif()
+
+# stb's single-file headers: /usr/include/stb on Debian and Ubuntu, include/ in vcpkg and Homebrew.
+find_path(WB_STB_DIR stb_image.h PATH_SUFFIXES stb REQUIRED)
+add_library(wb_stb INTERFACE)
+target_include_directories(wb_stb SYSTEM INTERFACE ${WB_STB_DIR})
