@@ -30,7 +30,8 @@ else()
   target_link_libraries(wb_imgui INTERFACE PkgConfig::IMGUI)
 endif()
 
-# stb's single-file headers: /usr/include/stb on Debian and Ubuntu, include/ in vcpkg and Homebrew.
-find_path(WB_STB_DIR stb_image.h PATH_SUFFIXES stb REQUIRED)
+# stb's single-file headers: /usr/include/stb on Debian and Ubuntu, include/ in vcpkg, or a checkout
+# in third_party/stb (macOS: Homebrew has no stb).
+find_path(WB_STB_DIR stb_image.h HINTS ${PROJECT_SOURCE_DIR}/third_party/stb PATH_SUFFIXES stb REQUIRED)
 add_library(wb_stb INTERFACE)
 target_include_directories(wb_stb SYSTEM INTERFACE ${WB_STB_DIR})

@@ -1,6 +1,12 @@
 # add_lab(NN_name): the student build, the solution build (when solutions/NN_name exists), their tests,
 # and the mutants that test the tests. Nothing here is specific to one lab.
-set(WB_WARNINGS -Wall -Wextra)
+if(MSVC)  # (untested: no MSVC here) level 4, sources in UTF-8 (², ×), no min/max macros from windows.h
+  set(WB_WARNINGS /W4)
+  add_compile_options(/utf-8 /permissive-)
+  add_compile_definitions(NOMINMAX _USE_MATH_DEFINES _CRT_SECURE_NO_WARNINGS)
+else()
+  set(WB_WARNINGS -Wall -Wextra)
+endif()
 option(WB_EXPECT_STUBS "Student tests pass only when they report NOT IMPLEMENTED (the state of the repo)" OFF)
 # The grader's runner tree (tools/grade.py) turns this off: registering tests with ctest runs each
 # test binary after it is linked (gtest_discover_tests), which would run a student's code in the build.

@@ -313,6 +313,7 @@ void App::finish(RunRecord& record) {
   lab_->board().printUnfinished();
   record.set("title", lab_->board().title());
   record.set("renderer", Context::renderer());
+  record.set("gl_version", Context::version());
   record.set("size", {size.x, size.y});
   record.set("frames", frameIndex_);
   record.set("exercises", lab_->board().toJson());

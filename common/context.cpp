@@ -191,6 +191,11 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options) {
   return ctx;
 }
 
+std::string Context::version() {
+  const GLubyte* v = glGetString(GL_VERSION);
+  return v ? reinterpret_cast<const char*>(v) : "unknown";
+}
+
 std::string Context::renderer() {
   const GLubyte* r = glGetString(GL_RENDERER);
   return r ? reinterpret_cast<const char*>(r) : "unknown";

@@ -40,6 +40,8 @@ class Context {
   virtual glm::ivec2 framebufferSize() const { return {0, 0}; }
   /// GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
   static std::string renderer();
+  /// GL_VERSION, e.g. "4.1 (Core Profile) Mesa 22.3.6".
+  static std::string version();
 };
 
 /// GL errors reported through KHR_debug since the last call, oldest first; clears the list.

@@ -383,6 +383,21 @@ TEST(RunRecord, CarriesEverythingWithoutTheTextForPeople) {
   for (const auto& [id, state] : sol.exerciseStates) EXPECT_EQ(state, "implemented") << id;
 }
 
+// The record names the OpenGL it ran on. Where Mesa is capped at 4.1 core as on a Mac (what
+// ./workbook test and CI do), the lab really ran on 4.1: the suite's pass means something there.
+TEST(RunRecord, NamesTheOpenGLVersionItRanOn) {
+  const fs::path record = scratch("cli") / "version.json";
+  const LabResult r = runLab("--headless --quiet --size 64x48 --frames 1 --record " + record.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream in(record);
+  const std::string version = nlohmann::json::parse(in).value("gl_version", std::string());
+  EXPECT_EQ(version.rfind("4.", 0), 0u) << "gl_version: '" << version << "'";
+  const char* cap = std::getenv("MESA_GL_VERSION_OVERRIDE");
+  if (cap && std::string(cap) == "4.1") {
+    EXPECT_EQ(version.rfind("4.1 ", 0), 0u) << "Mesa was capped at 4.1, and the lab ran on " << version;
+  }
+}
+
 // A failed run says so in its record too, with the message people see.
 TEST(RunRecord, AFailedRunRecordsWhy) {
   const fs::path record = scratch("cli") / "failed.json";
