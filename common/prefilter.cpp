@@ -168,7 +168,7 @@ void FilteredShadowMap::prefilter(const Program& blur) {
     glViewport(0, 0, size_, size_);
     // Two passes of a 1D kernel (horizontal into scratch, vertical back): O(n) taps per texel
     // instead of O(n²) for the 2D kernel.
-    const GLuint from[2] = {color_.id(), scratch_.id()}, to[2] = {scratch_.id(), color_.id()};
+    const GLuint from[2] = {color_.id(), scratch_.id()};
     const GLuint fbo[2] = {scratchFbo_.id(), backFbo_.id()};
     for (int pass = 0; pass < 2; ++pass) {
       glProgramUniform2i(p.id(), glGetUniformLocation(p.id(), "u_axis"), pass == 0, pass == 1);

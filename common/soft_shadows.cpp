@@ -2,6 +2,8 @@
 
 #include "common/parallel.hpp"
 
+#include <glm/gtc/constants.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -114,7 +116,7 @@ double diskTenNinetyFraction() {
   // width is the diameter, 2: the fraction is t10.
   double lo = 0, hi = 1;
   for (int k = 0; k < 60; ++k) {
-    const double t = 0.5 * (lo + hi), share = (std::acos(t) - t * std::sqrt(1 - t * t)) / M_PI;
+    const double t = 0.5 * (lo + hi), share = (std::acos(t) - t * std::sqrt(1 - t * t)) / glm::pi<double>();
     (share > 0.1 ? lo : hi) = t;
   }
   return 0.5 * (lo + hi);
