@@ -250,7 +250,7 @@ void App::drawLab() {
     target_.bind();
     const glm::ivec2 size = target_.size();
     const std::string said = "The shaders do not compile: nothing is drawn until they do (save a fix).";
-    const float scale = std::min(Label::scaleToFit(said, size.x - 32), Label::scaleToFit(where, size.x - 32));
+    const float scale = std::min(label_.scaleToFit(said, size.x - 32), label_.scaleToFit(where, size.x - 32));
     label_.draw(said, {16, size.y - int(44 * scale)}, size, scale);  // below the panels, which say it too
     label_.draw(where, {16, size.y - int(22 * scale)}, size, scale);
   }

@@ -1,35 +1,45 @@
 /// @file label.hpp
 /// A line of text burnt into the frame's colour (never its visibility), so that a headless
-/// screenshot says what it shows too: the split screen's halves are labelled with it.
+/// screenshot says what it shows too: the split screen's halves, the presenter's captions.
 #pragma once
+#include "common/font.hpp"
 #include "common/gl.hpp"
 #include "common/shader.hpp"
 
 #include <glm/vec2.hpp>
 
 #include <map>
+#include <memory>
 #include <string>
 
 namespace wb {
 
-/// Draws short labels with stb_easy_font's bitmap font.
+/// Draws short labels (UTF-8) in DejaVu Sans (common/font.hpp); where no such font is found, in
+/// stb_easy_font's ASCII bitmap font, after one warning.
 class Label {
  public:
   /// Draws `text` with its top left at `pixel` (from the top left) into colour attachment 0 of the
-  /// bound framebuffer of `size`, white on a dark box, `scale` times the font's size.
+  /// bound framebuffer of `size`, white on a dark box. At `scale` 1 a line is 12 pixels tall (the
+  /// font's size is 10 pixels).
   void draw(const std::string& text, glm::ivec2 pixel, glm::ivec2 size, float scale = 2.0f);
   /// The largest scale, up to `most`, at which `text` is at most `pixels` wide.
-  static float scaleToFit(const std::string& text, int pixels, float most = 2.0f);
+  float scaleToFit(const std::string& text, int pixels, float most = 2.0f);
+  /// The width of `text` at scale 1, in pixels.
+  float width(const std::string& text);
+  /// True when the labels use the TTF font (false: the ASCII bitmap fallback).
+  bool hasFont();
 
  private:
   struct Mesh {
-    Buffer vertices;        // the box's 6, then the glyphs'
+    Buffer vertices;        // (x, y, u, v): the box's 6, then the glyphs'
     GLsizei glyphVertices;  // how many of the glyphs'
   };
   const Mesh& mesh(const std::string& text);  // built once per text, not per frame
   Program program_;
   VertexArray vao_;
   std::map<std::string, Mesh> meshes_;
+  std::unique_ptr<FontAtlas> font_;
+  bool fontTried_ = false;
 };
 
 }  // namespace wb

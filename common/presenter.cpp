@@ -38,7 +38,8 @@ DemoStep readStep(const nlohmann::ordered_json& s, const std::vector<std::string
   return d;
 }
 
-// stb_easy_font draws ASCII: the few other characters captions use are spelled out.
+// The bitmap fallback (no TTF font found) draws ASCII: the few other characters captions use are
+// spelled out.
 std::string ascii(const std::string& text) {
   static const std::pair<const char*, const char*> kSpelled[] = {
       {"\xC2\xB0", " deg"},   {"\xC3\x97", "x"},      {"\xE2\x80\x94", " - "}, {"\xE2\x80\x93", "-"},
@@ -64,13 +65,13 @@ std::string ascii(const std::string& text) {
 }
 
 // Greedy word wrap at `scale` into lines at most `pixels` wide.
-std::vector<std::string> wrap(const std::string& text, int pixels, float scale) {
+std::vector<std::string> wrap(Label& label, const std::string& text, int pixels, float scale) {
   std::vector<std::string> lines;
   std::istringstream words(text);
   std::string line;
   for (std::string w; words >> w;) {
     const std::string longer = line.empty() ? w : line + " " + w;
-    if (!line.empty() && Label::scaleToFit(longer, pixels, 1e9f) < scale) {
+    if (!line.empty() && label.scaleToFit(longer, pixels, 1e9f) < scale) {
       lines.push_back(line), line = w;
     } else {
       line = longer;
@@ -130,6 +131,8 @@ const DemoStep& Presenter::apply(int k, Settings& settings) const {
 
 int Presenter::bandHeight(glm::ivec2 size) { return std::max(72, size.y * 15 / 100); }
 
+float Presenter::captionPixels(glm::ivec2 size) { return 30.0f * float(bandHeight(size)) / 160.0f; }
+
 void Presenter::drawBand(int k, const std::string& numbers, glm::ivec2 size) {
   const DemoStep& s = step(k);
   const int band = bandHeight(size), margin = std::max(8, size.x / 80);
@@ -138,21 +141,22 @@ void Presenter::drawBand(int k, const std::string& numbers, glm::ivec2 size) {
   const float dark[4] = {0.08f, 0.08f, 0.09f, 1};
   glClearBufferfv(GL_COLOR, 0, dark);
   glDisable(GL_SCISSOR_TEST);
-  // Sizes follow the window's height: 1080 rows give the caption 3.5 times stb_easy_font's size.
-  const float unit = float(band) / 160.0f;
-  const std::string title = strf("%d/%d  ", k, count()) + ascii(s.title);
-  const float titleScale = std::min(unit * 4.0f, Label::scaleToFit(title, size.x - 2 * margin, 1e9f));
+  // Sizes follow the window's height (captionPixels); a Label's font is 10 pixels at scale 1.
+  const float unit = captionPixels(size) / 30.0f;
+  auto text = [&](const std::string& t) { return label_.hasFont() ? t : ascii(t); };
+  const int width = size.x - 2 * margin;
+  const std::string title = strf("%d/%d  ", k, count()) + text(s.title);
+  const float titleScale = std::min(unit * 4.0f, label_.scaleToFit(title, width, 1e9f));
   int y = size.y - band + margin / 2;
   label_.draw(title, {margin, y}, size, titleScale);
   y += int(12 * titleScale);
   const float captionScale = unit * 3.0f;
-  for (const auto& line : wrap(ascii(s.caption), size.x - 2 * margin, captionScale)) {
-    label_.draw(line, {margin, y}, size, std::min(captionScale, Label::scaleToFit(line, size.x - 2 * margin, 1e9f)));
-    y += int(11 * captionScale);
+  for (const auto& line : wrap(label_, text(s.caption), width, captionScale)) {
+    label_.draw(line, {margin, y}, size, std::min(captionScale, label_.scaleToFit(line, width, 1e9f)));
+    y += int(12 * captionScale);
   }
   if (!numbers.empty())
-    label_.draw(numbers, {margin, y}, size,
-                std::min(unit * 2.8f, Label::scaleToFit(numbers, size.x - 2 * margin, 1e9f)));
+    label_.draw(numbers, {margin, y}, size, std::min(unit * 2.8f, label_.scaleToFit(numbers, width, 1e9f)));
 }
 
 std::string Presenter::numbersLine(const MeasureResult& r) {

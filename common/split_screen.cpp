@@ -42,7 +42,7 @@ void SplitScreen::render(FrameTarget& target, Settings& settings, const CompareC
   // (as large as a lecture room needs: 2.25 at 540 rows, 4.5 at 1080, and never wider than the half)
   const std::string left = choice.key + " = " + choice.a, right = choice.key + " = " + choice.b;
   const float most = size.y >= 400 ? size.y / 240.0f : 1.0f;
-  const float scale = std::min(Label::scaleToFit(left, half - 24, most), Label::scaleToFit(right, half - 24, most));
+  const float scale = std::min(label_.scaleToFit(left, half - 24, most), label_.scaleToFit(right, half - 24, most));
   label_.draw(left, {8, size.y - int(12 * scale)}, size, scale);
   label_.draw(right, {half + 8, size.y - int(12 * scale)}, size, scale);
 }
