@@ -3,6 +3,7 @@
 
 #include "common/context.hpp"
 #include "common/crash_report.hpp"
+#include "common/font.hpp"
 #include "common/image.hpp"
 #include "common/lab.hpp"
 #include "common/variant.hpp"
@@ -20,21 +21,48 @@ namespace fs = std::filesystem;
 
 namespace wb {
 
-// Dear ImGui with its GLFW and OpenGL 3 backends, in the canonical order; shut down in reverse.
+// Dear ImGui with its GLFW and OpenGL 3 backends, in the canonical order; shut down in reverse. The
+// panels' text is DejaVu Sans (the frames' labels' font), baked at 32 px and drawn at 16 px times
+// the UI scale (ui.scale), with the symbols the panels print (±, ×, µ, ≤, σ).
 struct App::ImGuiLayer {
+  static constexpr float kBasePixels = 16.0f, kBakePixels = 32.0f;
   explicit ImGuiLayer(GLFWwindow* window) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;
+    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x03BB, 0x03C3, 0x2013, 0x2026, 0x2190, 0x2192, 0x2248, 0x2265, 0};
+    const fs::path ttf = findFontFile();
+    if (!ttf.empty() && ImGui::GetIO().Fonts->AddFontFromFileTTF(ttf.string().c_str(), kBakePixels, nullptr, ranges))
+      bakedPixels_ = kBakePixels;
+    base_ = ImGui::GetStyle();
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     ImGui_ImplOpenGL3_Init("#version 410 core");
   }
+  // Text kBasePixels * scale tall, and the paddings and widgets scaled with it.
+  void setScale(float scale) {
+    if (scale == scale_) return;
+    scale_ = scale;
+    ImGui::GetIO().FontGlobalScale = kBasePixels * scale / bakedPixels_;
+    ImGui::GetStyle() = base_;
+    ImGui::GetStyle().ScaleAllSizes(scale);
+  }
+  float bakedPixels_ = 13.0f;  // ImGui's own font when no TTF is found
+  float scale_ = 0.0f;
+  ImGuiStyle base_;
   ~ImGuiLayer() {
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
   }
 };
+
+// ui.scale, or where it is 0, the monitor's content scale, more for a window taller than 1080 rows,
+// and a quarter more while presenting (read from the back of a room).
+void App::applyUiScale() {
+  const float rows = float(ctx_->framebufferSize().y) / ctx_->contentScale();
+  const float automatic = ctx_->contentScale() * std::max(1.0f, rows / 1080.0f) * (step_ > 0 ? 1.25f : 1.0f);
+  imgui_->setScale(lab_->uiScale_ > 0 ? lab_->uiScale_ : automatic);
+}
 
 void App::configureSettings(Lab& lab, const Options& o) {
   for (const auto& s : o.sets) lab.settings.assign(s);
@@ -127,7 +155,8 @@ App::App(const Options& options, const std::string& title) : options_(options) {
   strictGl_ = true;
 #endif
   if (const char* strict = std::getenv("WB_STRICT_GL")) strictGl_ = std::string(strict) != "0";
-  ctx_ = Context::create({options_.headless, frameSize_.x, frameSize_.y, title, true});
+  ctx_ = Context::create({options_.headless, frameSize_.x, frameSize_.y, title, true, options_.fullscreen});
+  fullscreen_ = options_.fullscreen;
   if (!options_.bench.empty() && !options_.headless) glfwSwapInterval(0);  // measure, do not wait for vsync
   if (!ctx_->headless()) imgui_ = std::make_unique<ImGuiLayer>(ctx_->window());
   // Keys are polled once a frame; sticky keys keep a tap shorter than a frame (a presenter's clicker
@@ -165,7 +194,7 @@ void App::host(std::unique_ptr<Lab> lab) {
   // A window checks the exercises in the background (a headless run is what the checks start).
   checks_.reset();
   loadPicture();
-  if (imgui_) {
+  if (imgui_ && std::string(variant::kLab) != "00_showcase") {  // (the showcase has no exercises to check)
     // (the exercise folder is the first on the variant's shader path: <exercise_dir>/shaders)
     const std::string shaders =
         std::string(variant::kShaderPath).substr(0, std::string(variant::kShaderPath).find(';'));

@@ -72,6 +72,7 @@ class App {
 
  private:
   void beginUiFrame();
+  void applyUiScale();  // the panels' text size: ui.scale, or the monitor's
   void handleKeys();
   void hotReload();
   void drawLab();
@@ -102,6 +103,7 @@ class App {
 
   ShellState shell_;
   int step_ = 0;              // the presenter step shown (0: not presenting)
+  bool fullscreen_ = false;   // the window fills the monitor (--fullscreen, F11)
   bool measureStep_ = false;  // the step asks for numbers: measure after its first frame
   std::string stepNumbers_;   // and show them in the caption band
   LightView sides_[2];

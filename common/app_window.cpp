@@ -33,6 +33,7 @@ void App::loadPicture() {
 }
 
 void App::beginUiFrame() {
+  applyUiScale();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
@@ -67,6 +68,7 @@ void App::handleKeys() {
       lab.bookmark_ = k + 1, lab.camera.pose = lab.scene.cameras[size_t(k)];
   if (pressed(GLFW_KEY_F12) || pressed(GLFW_KEY_P)) screenshotRequested_ = true;
   if (pressed(GLFW_KEY_H)) shell_.hidePanels = !shell_.hidePanels;
+  if (pressed(GLFW_KEY_F11)) fullscreen_ = !fullscreen_, ctx_->setFullscreen(fullscreen_, options_.size);
   stepKeys(pressed);
 }
 

@@ -73,6 +73,8 @@ CompareChoice parseCompare(const std::string& v) {
 const OptionSpec kOptions[] = {
     {"--headless", nullptr, "render without a window (EGL, Mesa llvmpipe); writes a PNG if no output is named",
      [](Options& o, const std::string&) { o.headless = true; }},
+    {"--fullscreen", nullptr, "the window fills the primary monitor, at its resolution (F11 toggles it)",
+     [](Options& o, const std::string&) { o.fullscreen = true; }},
     {"--scene", "FILE", "scene file (default %SCENE%)", [](Options& o, const std::string& v) { o.scene = v; }},
     {"--size", "WxH", "frame size in pixels (default 960x540)",
      [](Options& o, const std::string& v) { o.size = parseSize(v); }},

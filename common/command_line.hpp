@@ -22,6 +22,7 @@ struct CompareChoice {
 struct Options {
   bool help = false;              ///< --help: print the usage and exit
   bool headless = false;          ///< --headless: EGL, no window
+  bool fullscreen = false;        ///< --fullscreen: the window fills the primary monitor (F11 toggles)
   bool listSettings = false;      ///< --list-settings: print the settings and exit
   bool metrics = false;           ///< --metrics: measure against exact visibility
   bool quiet = false;             ///< --quiet: no human-readable text on stdout

@@ -138,7 +138,10 @@ class GlfwContext final : public Context {
     glfwWindowHint(GLFW_COCOA_RETINA_FRAMEBUFFER, GLFW_TRUE);
     glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, o.debug ? GLFW_TRUE : GLFW_FALSE);
     glfwWindowHint(GLFW_VISIBLE, hidden ? GLFW_FALSE : GLFW_TRUE);
-    window_ = glfwCreateWindow(o.width, o.height, o.title.c_str(), nullptr, nullptr);
+    GLFWmonitor* monitor = o.fullscreen && !hidden ? glfwGetPrimaryMonitor() : nullptr;
+    const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+    window_ = mode ? glfwCreateWindow(mode->width, mode->height, o.title.c_str(), monitor, nullptr)
+                   : glfwCreateWindow(o.width, o.height, o.title.c_str(), nullptr, nullptr);
     if (!window_) {
       glfwTerminate();
       throw ContextError(
@@ -162,6 +165,20 @@ class GlfwContext final : public Context {
     if (hidden_) return;
     glfwSwapBuffers(window_);
     glfwPollEvents();
+  }
+  void setFullscreen(bool on, glm::ivec2 size) override {
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+    if (hidden_ || !mode) return;
+    if (on)
+      glfwSetWindowMonitor(window_, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+    else
+      glfwSetWindowMonitor(window_, nullptr, 40, 40, size.x, size.y, GLFW_DONT_CARE);
+  }
+  float contentScale() const override {
+    float x = 1, y = 1;
+    if (!hidden_) glfwGetWindowContentScale(window_, &x, &y);
+    return y > 0 ? y : 1.0f;
   }
   glm::ivec2 framebufferSize() const override {
     if (hidden_) return {0, 0};

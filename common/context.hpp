@@ -15,11 +15,12 @@ namespace wb {
 
 /// How to create a context.
 struct ContextOptions {
-  bool headless = false;  ///< no window: EGL surfaceless (Linux) or a hidden window (macOS, Windows)
-  int width = 960;        ///< window width in pixels (ignored when headless)
-  int height = 540;       ///< window height in pixels (ignored when headless)
-  std::string title;      ///< window title
-  bool debug = true;      ///< request a debug context and install the KHR_debug callback
+  bool headless = false;    ///< no window: EGL surfaceless (Linux) or a hidden window (macOS, Windows)
+  int width = 960;          ///< window width in pixels (ignored when headless)
+  int height = 540;         ///< window height in pixels (ignored when headless)
+  std::string title;        ///< window title
+  bool debug = true;        ///< request a debug context and install the KHR_debug callback
+  bool fullscreen = false;  ///< the window fills the primary monitor (ignored when headless)
 };
 
 /// A current GL context; destroying it releases the window or EGL display.
@@ -38,6 +39,10 @@ class Context {
   virtual void endFrame() {}
   /// The default framebuffer's size in pixels ({0,0} when headless).
   virtual glm::ivec2 framebufferSize() const { return {0, 0}; }
+  /// Switches the window between the primary monitor (at its resolution) and a window of `size`.
+  virtual void setFullscreen(bool, glm::ivec2) {}
+  /// The monitor's content scale (2 on a Retina display, 1.5 at 150% on Windows); 1 when headless.
+  virtual float contentScale() const { return 1.0f; }
   /// GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
   static std::string renderer();
   /// GL_VERSION, e.g. "4.1 (Core Profile) Mesa 22.3.6".

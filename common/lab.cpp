@@ -28,6 +28,8 @@ Lab::Lab(std::string defaultScene, ShadowKind kind)
   settings.add("light.index", lightIndex, 0, 7, "which light of the scene casts shadows");
   if (kind == ShadowKind::Map) debug_.addTo(settings);
   settings.add("camera.bookmark", bookmark_, 1, 9, "camera bookmark of the scene file, 1 = the first (keys 1-9)");
+  settings.add("ui.scale", uiScale_, 0.0f, 4.0f,
+               "the panels' text size: 1 = 16 px, 2 = 32 px; 0 = follow the monitor (and 1.25x while presenting)");
   // For lectures (demo.json turns them on); the visibility buffer that tests read never changes.
   settings.add("present.srgb", present_.srgb, "write sRGB-encoded colour (the shading is linear)");
   settings.add("present.grid", present_.grid, "a faint one-unit grid on the ground, to read texel sizes off");

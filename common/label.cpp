@@ -80,9 +80,9 @@ const Label::Mesh& Label::mesh(const std::string& text) {
   if (meshes_.size() >= 32) meshes_.clear();  // (labels change rarely; keep a few)
   std::vector<glm::vec4> vertices(6);
   const float w = hasFont() ? addFontText(*font_, text, vertices) : addBitmapText(text, vertices);
-  const float h = 12;  // the dark box's two triangles, around one line
-  const glm::vec4 box[6] = {{-3, -3, -1, -1}, {w + 2, -3, -1, -1}, {w + 2, h, -1, -1},
-                            {-3, -3, -1, -1}, {w + 2, h, -1, -1},  {-3, h, -1, -1}};
+  const float h = 13;  // the dark box's two triangles, around one line and its descenders
+  const glm::vec4 box[6] = {{-3, -2, -1, -1}, {w + 2, -2, -1, -1}, {w + 2, h, -1, -1},
+                            {-3, -2, -1, -1}, {w + 2, h, -1, -1},  {-3, h, -1, -1}};
   std::copy(box, box + 6, vertices.begin());
   Mesh m{makeBuffer(vertices.size() * sizeof(glm::vec4), vertices.data()), GLsizei(vertices.size()) - 6};
   return meshes_.emplace(text, std::move(m)).first->second;

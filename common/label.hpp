@@ -19,8 +19,8 @@ namespace wb {
 class Label {
  public:
   /// Draws `text` with its top left at `pixel` (from the top left) into colour attachment 0 of the
-  /// bound framebuffer of `size`, white on a dark box. At `scale` 1 a line is 12 pixels tall (the
-  /// font's size is 10 pixels).
+  /// bound framebuffer of `size`, white on a dark box. At `scale` 1 the font's size is 10 pixels and
+  /// the box 15 tall (2 above the text's top, 13 down to below its descenders).
   void draw(const std::string& text, glm::ivec2 pixel, glm::ivec2 size, float scale = 2.0f);
   /// The largest scale, up to `most`, at which `text` is at most `pixels` wide.
   float scaleToFit(const std::string& text, int pixels, float most = 2.0f);

@@ -129,9 +129,10 @@ const DemoStep& Presenter::apply(int k, Settings& settings) const {
   return s;
 }
 
-int Presenter::bandHeight(glm::ivec2 size) { return std::max(72, size.y * 15 / 100); }
+// The band holds the title, two lines of caption and the numbers, at 30-pixel captions for 1080 rows.
+int Presenter::bandHeight(glm::ivec2 size) { return std::max(72, size.y * 18 / 100); }
 
-float Presenter::captionPixels(glm::ivec2 size) { return 30.0f * float(bandHeight(size)) / 160.0f; }
+float Presenter::captionPixels(glm::ivec2 size) { return std::max(10.0f, 30.0f * float(size.y) / 1080.0f); }
 
 void Presenter::drawBand(int k, const std::string& numbers, glm::ivec2 size) {
   const DemoStep& s = step(k);
@@ -146,14 +147,14 @@ void Presenter::drawBand(int k, const std::string& numbers, glm::ivec2 size) {
   auto text = [&](const std::string& t) { return label_.hasFont() ? t : ascii(t); };
   const int width = size.x - 2 * margin;
   const std::string title = strf("%d/%d  ", k, count()) + text(s.title);
-  const float titleScale = std::min(unit * 4.0f, label_.scaleToFit(title, width, 1e9f));
+  const float titleScale = std::min(unit * 3.4f, label_.scaleToFit(title, width, 1e9f));
   int y = size.y - band + margin / 2;
   label_.draw(title, {margin, y}, size, titleScale);
-  y += int(12 * titleScale);
+  y += int(15 * titleScale);
   const float captionScale = unit * 3.0f;
   for (const auto& line : wrap(label_, text(s.caption), width, captionScale)) {
     label_.draw(line, {margin, y}, size, std::min(captionScale, label_.scaleToFit(line, width, 1e9f)));
-    y += int(12 * captionScale);
+    y += int(15 * captionScale);
   }
   if (!numbers.empty())
     label_.draw(numbers, {margin, y}, size, std::min(unit * 2.8f, label_.scaleToFit(numbers, width, 1e9f)));

@@ -48,7 +48,7 @@ class Presenter {
   /// The caption band's height for a window of `size`.
   static int bandHeight(glm::ivec2 size);
   /// The caption's font size in pixels for a window of `size` (30 at 1080 rows: readable from the
-  /// back of a lecture hall); the title's is 4/3 of it.
+  /// back of a lecture hall); the title's is 1.13 times it.
   static float captionPixels(glm::ivec2 size);
   /// Draws step `k`'s title, caption and `numbers` in the band (the bottom `bandHeight` rows of the
   /// bound framebuffer of `size`).

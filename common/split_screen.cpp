@@ -43,8 +43,8 @@ void SplitScreen::render(FrameTarget& target, Settings& settings, const CompareC
   const std::string left = choice.key + " = " + choice.a, right = choice.key + " = " + choice.b;
   const float most = size.y >= 400 ? size.y / 240.0f : 1.0f;
   const float scale = std::min(label_.scaleToFit(left, half - 24, most), label_.scaleToFit(right, half - 24, most));
-  label_.draw(left, {8, size.y - int(12 * scale)}, size, scale);
-  label_.draw(right, {half + 8, size.y - int(12 * scale)}, size, scale);
+  label_.draw(left, {8, size.y - int(13 * scale)}, size, scale);
+  label_.draw(right, {half + 8, size.y - int(13 * scale)}, size, scale);
 }
 
 }  // namespace wb
