@@ -102,10 +102,11 @@ class App {
   std::unique_ptr<Lab> lab_;              // declared last: destroyed first
 
   ShellState shell_;
-  int step_ = 0;              // the presenter step shown (0: not presenting)
-  bool fullscreen_ = false;   // the window fills the monitor (--fullscreen, F11)
-  bool measureStep_ = false;  // the step asks for numbers: measure after its first frame
-  std::string stepNumbers_;   // and show them in the caption band
+  int step_ = 0;               // the presenter step shown (0: not presenting)
+  bool fullscreen_ = false;    // the window fills the monitor (--fullscreen, F11)
+  glm::ivec2 viewSize_{0, 0};  // the window's scene area; frameSize_ is it times render.scale
+  bool measureStep_ = false;   // the step asks for numbers: measure after its first frame
+  std::string stepNumbers_;    // and show them in the caption band
   LightView sides_[2];
   std::optional<MeasureResult> lastMeasure_;
   std::vector<std::pair<std::string, std::string>> written_;  // (kind, path) of files written

@@ -51,8 +51,11 @@ void App::beginUiFrame() {
   lastMouse_ = mouse;
   if (!io.WantCaptureKeyboard) handleKeys();
   const glm::ivec2 window = ctx_->framebufferSize();
-  frameSize_ = glm::max(window, glm::ivec2(16));
-  if (step_ > 0) frameSize_.y = std::max(16, window.y - Presenter::bandHeight(window));  // the caption's band
+  glm::ivec2 scene = window;
+  if (step_ > 0) scene.y = window.y - Presenter::bandHeight(window);  // the caption's band
+  viewSize_ = glm::max(scene, glm::ivec2(16));
+  // render.scale: the scene is drawn smaller and stretched over the window; the panels stay sharp.
+  frameSize_ = glm::max(glm::ivec2(glm::round(glm::vec2(viewSize_) * lab_->renderScale_)), glm::ivec2(16));
 }
 
 void App::handleKeys() {
@@ -107,14 +110,15 @@ void App::stepKeys(const std::function<bool(int)>& pressed) {
 }
 
 void App::presentWindow() {
-  const glm::ivec2 size = target_.size(), window = ctx_->framebufferSize();
-  const int band = step_ > 0 ? std::max(0, window.y - size.y) : 0;  // the presenter's caption, below
+  const glm::ivec2 size = target_.size(), window = ctx_->framebufferSize(), shown = glm::min(viewSize_, window);
+  const int band = step_ > 0 ? std::max(0, window.y - shown.y) : 0;  // the presenter's caption, below
   glBindFramebuffer(GL_READ_FRAMEBUFFER, target_.framebuffer());
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
   {
     auto timer = timers_.scope("blit");  // (a window's extra passes are timed too: ./workbook bench NN --window)
-    glBlitFramebuffer(0, 0, size.x, size.y, 0, band, size.x, band + size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitFramebuffer(0, 0, size.x, size.y, 0, band, shown.x, band + shown.y, GL_COLOR_BUFFER_BIT,
+                      size == shown ? GL_NEAREST : GL_LINEAR);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, window.x, window.y);
@@ -127,7 +131,7 @@ void App::presentWindow() {
     lab.ui();
   };
   if (step_ == 0)  // presenting: the picture and its caption, no panels
-    drawShell({lab.board_, checks_.get(), timers_, lab.programs_, lab.warnings_, lab.settings, size, picture_.id(),
+    drawShell({lab.board_, checks_.get(), timers_, lab.programs_, lab.warnings_, lab.settings, shown, picture_.id(),
                pictureSize_, labUi},
               shell_);
   if (shell_.measureRequested) shell_.measureRequested = false, measureNow(true);

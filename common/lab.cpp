@@ -28,6 +28,9 @@ Lab::Lab(std::string defaultScene, ShadowKind kind)
   settings.add("light.index", lightIndex, 0, 7, "which light of the scene casts shadows");
   if (kind == ShadowKind::Map) debug_.addTo(settings);
   settings.add("camera.bookmark", bookmark_, 1, 9, "camera bookmark of the scene file, 1 = the first (keys 1-9)");
+  settings.add("render.scale", renderScale_, 0.25f, 1.0f,
+               "in a window, draw the scene at this fraction of the window's resolution and stretch it (the "
+               "panels and captions stay sharp): 0.5 at 1920x1080 costs about what 960x540 does");
   settings.add("ui.scale", uiScale_, 0.0f, 4.0f,
                "the panels' text size: 1 = 16 px, 2 = 32 px; 0 = follow the monitor (and 1.25x while presenting)");
   // For lectures (demo.json turns them on); the visibility buffer that tests read never changes.

@@ -191,8 +191,9 @@ class Lab {
   bool lightSizeUsed_ = false;  // useLightSize() was called: a scene's light size sets light.size
   int lightSamples_ = 1;        // index into 16, 64, 256
   float alphaCutoff_ = 0.5f;
-  int bookmark_ = 1;   // counted from 1, as the keys are
-  float uiScale_ = 0;  // ui.scale: the panels' text size over 16 px (0: follow the monitor)
+  int bookmark_ = 1;       // counted from 1, as the keys are
+  float uiScale_ = 0;      // ui.scale: the panels' text size over 16 px (0: follow the monitor)
+  float renderScale_ = 1;  // render.scale: the scene's resolution over the window's (in a window)
   struct {
     bool srgb = false;  // present.srgb: encode the colour for the screen (the visibility is untouched)
     bool grid = false;  // present.grid: a faint world-unit grid on the ground
