@@ -74,6 +74,7 @@ class App {
   void beginUiFrame();
   void applyUiScale();  // the panels' text size: ui.scale, or the monitor's
   void handleKeys();
+  void upscale(int band, glm::ivec2 shown);  // the frame over the window's scene area (render.scale)
   void hotReload();
   void drawLab();
   void presentWindow();
@@ -105,8 +106,10 @@ class App {
   int step_ = 0;               // the presenter step shown (0: not presenting)
   bool fullscreen_ = false;    // the window fills the monitor (--fullscreen, F11)
   glm::ivec2 viewSize_{0, 0};  // the window's scene area; frameSize_ is it times render.scale
-  bool measureStep_ = false;   // the step asks for numbers: measure after its first frame
-  std::string stepNumbers_;    // and show them in the caption band
+  Program upscale_;            // render.scale below 1: the frame stretched over viewSize_
+  VertexArray emptyVao_;
+  bool measureStep_ = false;  // the step asks for numbers: measure after its first frame
+  std::string stepNumbers_;   // and show them in the caption band
   LightView sides_[2];
   std::optional<MeasureResult> lastMeasure_;
   std::vector<std::pair<std::string, std::string>> written_;  // (kind, path) of files written
