@@ -236,6 +236,7 @@ void App::frame(float dt) {
   if (imgui_) beginUiFrame();
   hotReload();
   applyPresentation();
+  lab_->comparison_ = shell_.compare;
   lab_->update(dt);
   target_.resize(frameSize_);
   drawLab();

@@ -5,10 +5,12 @@
 #include "common/settings.hpp"
 #include "common/strf.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -33,8 +35,10 @@ std::vector<std::string> header(const Options& o, const std::vector<std::string>
     h.insert(h.end(), {"acne_%", "leak_%", "contact_gap_texels", "shadow_light_%", "pcf_diff_%", "pcf_lighter_%",
                        "area_diff_%", "area_off_%"});
   if (o.metrics && seams) h.insert(h.end(), {"seam_err_%", "rest_err_%"});
-  for (const auto& p : passes) h.push_back(p + "_gpu_ms");
-  h.emplace_back("frame_ms");
+  for (const auto& p : passes) h.push_back(p + "_gpu_ms");  // in the median round (below)
+  // The frame's median over the rounds and its spread (fastest, slowest round), and the frame the
+  // passes were timed in, the median of those rounds (with timer queries; the passes fit inside it).
+  h.insert(h.end(), {"frame_ms", "frame_ms_min", "frame_ms_max", "timed_frame_ms"});
   return h;
 }
 
@@ -54,6 +58,21 @@ std::vector<std::string> measuredCells(const MeasureResult& m, bool seams) {
 }
 
 }  // namespace
+
+void RollingTimes::add(double ms) {
+  if (samples_.size() < capacity_)
+    samples_.push_back(ms);
+  else
+    samples_[next_] = ms;
+  next_ = (next_ + 1) % capacity_;
+}
+
+double RollingTimes::quantile(double q) const {
+  if (samples_.empty()) return 0;
+  std::vector<double> sorted = samples_;
+  std::sort(sorted.begin(), sorted.end());
+  return sorted[std::min(sorted.size() - 1, size_t(q * double(sorted.size())))];
+}
 
 void writeBench(const std::string& path, const std::string& lab, glm::ivec2 size, const GpuTimers& timers,
                 const WallClock& wall, bool print) {
@@ -82,37 +101,63 @@ void writeBench(const std::string& path, const std::string& lab, glm::ivec2 size
 
 namespace {
 
-// One row of a sweep: the settings' values, what was measured, and the mean of each pass and frame.
+// One row of a sweep: the settings' values, what was measured, and each round's times.
 struct SweepRow {
   std::vector<std::string> cells;
   std::optional<MeasureResult> measured;
-  std::vector<std::pair<std::string, double>> passes;  // name, mean ms (passes drawn in this row only)
-  double wallMs = 0;
+  std::vector<double> wallMs;                         // per round: the frame, timers off where they perturb
+  std::vector<double> timedWallMs;                    // per round: the frame the passes were timed in
+  std::vector<std::map<std::string, double>> passMs;  // per round: each pass drawn, its mean
+  // The round whose timed frame is the median: its passes are reported, so that they add up to at
+  // most its frame (medians taken pass by pass need not).
+  size_t medianRound() const {
+    std::vector<size_t> order(timedWallMs.size());
+    for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return timedWallMs[a] < timedWallMs[b]; });
+    return order[order.size() / 2];
+  }
 };
 
-// Times `timed` frames of the settings as they are: the wall clock over frames of their own where
-// timing passes slows the frame (gpu_timers.hpp), then the passes.
-SweepRow timeRow(int timed, GpuTimers& timers, const std::function<void()>& frame) {
-  SweepRow r;
-  frame();  // warm-up: allocations, first use of a program
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+double wallOf(int frames, GpuTimers& timers, const std::function<void()>& frame) {
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int f = 0; f < frames; ++f) frame(), timers.collect(true, true);
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / frames;
+}
+
+// One round of one row, the settings as they are: a warm-up frame, then `timed` frames on the wall
+// clock; where timing passes slows the frame (gpu_timers.hpp: a software renderer), the passes are
+// timed in frames of their own, whose wall time is kept too (the passes fit inside it).
+void timeRound(int timed, GpuTimers& timers, const std::function<void()>& frame, SweepRow& r) {
+  frame();  // warm-up: allocations, first use of a program after the settings changed
   timers.collect(true, false);
   timers.resetStats();
   const bool apart = timers.perturbs();
   timers.enable(!apart);
-  const auto t0 = std::chrono::steady_clock::now();
-  for (int f = 0; f < timed; ++f) {
-    frame();
-    timers.collect(true, true);
-  }
-  r.wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / timed;
+  const double wall = wallOf(timed, timers, frame);
   timers.enable(true);
-  for (int f = 0; apart && f < timed; ++f) {
-    frame();
-    timers.collect(true, true);
-  }
+  r.wallMs.push_back(wall);
+  r.timedWallMs.push_back(apart ? wallOf(timed, timers, frame) : wall);
+  r.passMs.emplace_back();
   for (const auto& [name, st] : timers.passes())
-    if (st.count) r.passes.emplace_back(name, st.mean());
-  return r;
+    if (st.count) r.passMs.back()[name] = st.mean();
+}
+
+// The settings of row n (the last key varies fastest), applied; returns their values.
+std::vector<std::string> applyRow(const Options& o, Settings& settings, size_t n) {
+  std::vector<std::string> values;
+  for (auto it = o.sweeps.rbegin(); it != o.sweeps.rend(); ++it) {
+    const std::string& v = it->second[n % it->second.size()];
+    settings.assign(it->first + "=" + v);
+    values.insert(values.begin(), v);
+    n /= it->second.size();
+  }
+  return values;
 }
 
 }  // namespace
@@ -126,22 +171,18 @@ int runSweep(const Options& o, Settings& settings, GpuTimers& timers, const std:
   }
   size_t total = 1;
   for (const auto& sw : o.sweeps) total *= sw.second.size();
-  std::vector<SweepRow> rows;
-  for (size_t n = 0; n < total; ++n) {
-    std::vector<std::string> values;
-    size_t k = n;
-    for (auto it = o.sweeps.rbegin(); it != o.sweeps.rend(); ++it) {  // the last key varies fastest
-      const std::string& v = it->second[k % it->second.size()];
-      settings.assign(it->first + "=" + v);
-      values.insert(values.begin(), v);
-      k /= it->second.size();
+  std::vector<SweepRow> rows(total);
+  // Interleaved rounds (A B C A B C ...), so that a machine that slows down or speeds up during the
+  // sweep moves every row alike; the measurements (--metrics) come after the first round, in frames
+  // of their own that no timing includes.
+  for (int round = 0; round < o.rounds; ++round)
+    for (size_t n = 0; n < total; ++n) {
+      if (!o.quiet) std::fprintf(stderr, "\rsweep: round %d/%d, row %zu/%zu ", round + 1, o.rounds, n + 1, total);
+      rows[n].cells = applyRow(o, settings, n);
+      timeRound(std::max(1, o.frames), timers, frame, rows[n]);
+      if (o.metrics && round == 0) rows[n].measured = measure();
     }
-    std::fprintf(stderr, "\rsweep %zu/%zu ", n + 1, total);
-    rows.push_back(timeRow(std::max(1, o.frames), timers, frame));
-    rows.back().cells = values;
-    if (o.metrics) rows.back().measured = measure();
-  }
-  std::fprintf(stderr, "\r%*s\r", 24, "");
+  if (!o.quiet) std::fprintf(stderr, "\r%*s\r", 40, "");
   // The table, once every row's passes (a technique may have passes of its own) are known.
   std::vector<std::string> passNames;
   for (const auto& [name, st] : timers.passes()) passNames.push_back(name);
@@ -157,13 +198,14 @@ int runSweep(const Options& o, Settings& settings, GpuTimers& timers, const std:
       const auto m = measuredCells(*r.measured, seams);
       r.cells.insert(r.cells.end(), m.begin(), m.end());
     }
+    const size_t mid = r.medianRound();
     for (const auto& name : passNames) {
-      std::string cell = "-";
-      for (const auto& [n, ms] : r.passes)
-        if (n == name) cell = strf("%.3f", ms);
-      r.cells.push_back(cell);
+      const auto found = r.passMs[mid].find(name);
+      r.cells.push_back(found == r.passMs[mid].end() ? "-" : strf("%.3f", found->second));
     }
-    r.cells.push_back(strf("%.2f", r.wallMs));
+    const auto [lo, hi] = std::minmax_element(r.wallMs.begin(), r.wallMs.end());
+    r.cells.insert(r.cells.end(), {strf("%.2f", median(r.wallMs)), strf("%.2f", *lo), strf("%.2f", *hi),
+                                   strf("%.2f", r.timedWallMs[mid])});
     row(r.cells, csv);
   }
   if (csv.is_open()) std::printf("wrote %s\n", std::filesystem::absolute(o.sweepCsv).string().c_str());

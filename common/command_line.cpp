@@ -97,6 +97,8 @@ const OptionSpec kOptions[] = {
      [](Options& o, const std::string& v) { o.sweeps.push_back(parseSweep(v)); }},
     {"--sweep-csv", "F.csv", "with --sweep: also write the table as CSV",
      [](Options& o, const std::string& v) { o.sweepCsv = v; }},
+    {"--rounds", "N", "with --sweep: time every row N times, in interleaved rounds (A B C A B C ...; default 5)",
+     [](Options& o, const std::string& v) { o.rounds = parseCount("--rounds", v); }},
     {"--demo-step", "N",
      "presenter step N of the lab's demo.json: its settings, camera and split screen (in a window, Page Down/Up "
      "step on)",

@@ -36,6 +36,7 @@ struct Options {
   std::string replayExercises;    ///< --replay-exercises F.json: use those results instead
   long long vary = -1;            ///< --vary SEED: perturb the scene's lights and cameras (-1: no)
   std::string sweepCsv;           ///< --sweep-csv F.csv
+  int rounds = 5;                 ///< --rounds N: a sweep times every row N times, interleaved
   glm::ivec2 size{960, 540};      ///< --size WxH
   int frames = -1;                ///< --frames N (-1: until the window closes; headless 1, bench 60)
   int demoStep = 0;               ///< --demo-step N: presenter step N of demo.json (0: none)

@@ -5,6 +5,7 @@
 /// lives in files a lab author can leave closed. A lab's main() is one line: wb::run<MyLab>().
 #pragma once
 #include "common/camera.hpp"
+#include "common/command_line.hpp"
 #include "common/debug_views.hpp"
 #include "common/error.hpp"
 #include "common/exercise_board.hpp"
@@ -69,11 +70,13 @@ class Lab {
   /// Called after the frame was measured against exact visibility (the Measure button, --metrics,
   /// a presenter step), with the measured numbers on one line; `split` when the frame was split.
   virtual void measured(const std::string& /*numbers*/, bool /*split*/) {}
+  /// The split screen of this frame (on, the setting compared and its two values).
+  const CompareChoice& comparison() const { return comparison_; }
 
   /// Builds a program that is hot-reloaded with the others; a broken edit keeps the last good one.
   Program& loadProgram(std::vector<ShaderStage> stages, std::string defines = {});
   /// Registers a GLSL exercise and the expression that probes whether it is implemented; the
-  /// expression is evaluated in a compute shader with `file` included and compared with WB_TODO; it
+  /// expression is evaluated in a vertex shader with `file` included and compared with WB_TODO; it
   /// may read wb_tex0 (a 2D texture) and wb_tex1 (a cube map).
   void glslExercise(const std::string& id, const std::string& file, const std::string& probe) {
     board_.addProbe(id, file, probe);
@@ -191,9 +194,10 @@ class Lab {
   bool lightSizeUsed_ = false;  // useLightSize() was called: a scene's light size sets light.size
   int lightSamples_ = 1;        // index into 16, 64, 256
   float alphaCutoff_ = 0.5f;
-  int bookmark_ = 1;       // counted from 1, as the keys are
-  float uiScale_ = 0;      // ui.scale: the panels' text size over 16 px (0: follow the monitor)
-  float renderScale_ = 1;  // render.scale: the scene's resolution over the window's (in a window)
+  int bookmark_ = 1;          // counted from 1, as the keys are
+  CompareChoice comparison_;  // the app's split screen, set every frame
+  float uiScale_ = 0;         // ui.scale: the panels' text size over 16 px (0: follow the monitor)
+  float renderScale_ = 1;     // render.scale: the scene's resolution over the window's (in a window)
   struct {
     bool srgb = false;  // present.srgb: encode the colour for the screen (the visibility is untouched)
     bool grid = false;  // present.grid: a faint world-unit grid on the ground

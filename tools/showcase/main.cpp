@@ -6,6 +6,7 @@
 // visibility as a render mode, timed like the others; "Measure" compares any of them with it (and
 // with the area-light reference, since the scene's spot light has a size).
 // ./workbook showcase --table sweeps every technique with --metrics into one table.
+#include "common/bench.hpp"
 #include "common/hosted_lab.hpp"
 
 #include <imgui.h>
@@ -69,7 +70,8 @@ class Showcase : public wb::Lab {
     own.include(settings, [](const wb::Setting& s) { return s.name != "alpha.cutoff" && s.name != "light.index"; });
     own.onChange("showcase.technique", [this] { adopt(); });
     for (const auto& t : kTechniques) hosted.push_back(std::make_unique<wb::HostedLab>(t.lab, mainOf(t.lab), t.sets));
-    frameMs.assign(kTechniques.size(), 0.0);
+    frameMs.assign(kTechniques.size(), wb::RollingTimes());
+    splitMs.assign(kTechniques.size(), wb::RollingTimes());
     lastMeasured.assign(kTechniques.size(), "");
     adopt();
   }
@@ -77,10 +79,20 @@ class Showcase : public wb::Lab {
  protected:
   void init() override {}
 
+  // The frame time goes to the technique drawn. A frame that measured (Measure, a presenter step)
+  // is not a frame of the technique's and is left out; a split screen's goes to both of its halves'
+  // techniques, in a list of its own (a frame with both halves is not either one's frame).
   void update(float dt) override {
     if (shown != technique) adopt();  // (the settings panel changed it)
-    double& ms = frameMs[size_t(technique)];
-    ms = ms == 0 ? dt * 1000.0 : 0.9 * ms + 0.1 * dt * 1000.0;
+    const bool skip = std::exchange(measuredLastFrame, false);
+    const wb::CompareChoice& split = comparison();
+    if (!skip && split.on && split.key == "showcase.technique") {
+      for (const std::string& half : {split.a, split.b})
+        for (size_t k = 0; k < kTechniques.size(); ++k)
+          if (half == kTechniques[k].name) splitMs[k].add(dt * 1000.0);
+    } else if (!skip && !split.on) {
+      frameMs[size_t(technique)].add(dt * 1000.0);
+    }
     lastDt = dt;
   }
 
@@ -97,6 +109,7 @@ class Showcase : public wb::Lab {
   // Each technique keeps its last measurement (Measure, whole frame), shown beside its frame time.
   void measured(const std::string& numbers, bool split) override {
     if (!split) lastMeasured[size_t(technique)] = numbers.substr(numbers.find(':') + 2);
+    measuredLastFrame = true;  // (the next frame's time includes the measurement)
   }
 
   void ui() override {
@@ -113,15 +126,22 @@ class Showcase : public wb::Lab {
     // One line until opened, like the Settings window: opened, it covers the lower left of the scene.
     ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
     ImGui::Begin("Techniques (frame ms while shown)", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    const float unit = ImGui::GetFontSize();
     for (size_t k = 0; k < kTechniques.size(); ++k) {
       const std::string row = std::string(kTechniques[k].name) + "  (lab " + std::string(kTechniques[k].lab, 2) + ")";
-      if (ImGui::Selectable(row.c_str(), int(k) == technique, 0, ImVec2(170, 0))) technique = int(k), adopt();
-      ImGui::SameLine(180);
-      if (frameMs[k] > 0)
-        ImGui::Text("%5.1f ms  %s", frameMs[k], lastMeasured[k].c_str());
+      if (ImGui::Selectable(row.c_str(), int(k) == technique, 0, ImVec2(11 * unit, 0))) technique = int(k), adopt();
+      ImGui::SameLine(12 * unit);
+      const wb::RollingTimes& t = frameMs[k];
+      if (!t.empty())
+        ImGui::Text("%5.1f ms (%.1f–%.1f)  %s", t.median(), t.low(), t.high(), lastMeasured[k].c_str());
       else
         ImGui::TextUnformatted("    -");
+      if (!splitMs[k].empty()) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("split screen %.1f ms", splitMs[k].median());
+      }
     }
+    ImGui::TextDisabled("median of the last 60 frames (10th to 90th percentile); frames that measured are left out");
     ImGui::TextDisabled("Measure (info panel) fills in a row's acne, leak and error against the truth");
     ImGui::End();
   }
@@ -135,7 +155,9 @@ class Showcase : public wb::Lab {
 
   std::vector<std::unique_ptr<wb::HostedLab>> hosted;  // one per technique, in kTechniques' order
   wb::Settings own;                                    // showcase.* and camera.bookmark
-  std::vector<double> frameMs;                         // per technique, smoothed
+  std::vector<wb::RollingTimes> frameMs;               // per technique, its whole frames
+  std::vector<wb::RollingTimes> splitMs;               // per technique, split-screen frames with it in a half
+  bool measuredLastFrame = false;                      // that frame's time includes a measurement
   std::vector<std::string> lastMeasured;               // per technique, its last whole-frame measurement
   int technique = 2, shown = -1;                       // pcf
   int kernel = 2, mapSize = 2;                         // 3 taps, 1024 texels: seed 000's defaults
