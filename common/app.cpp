@@ -121,13 +121,16 @@ int App::runLab(int argc, char** argv, std::unique_ptr<Lab> lab) {
     if (!options.replayExercises.empty()) lab->exerciseTape_.startReplay(options.replayExercises);
     const std::string number = lab->board().number();
     if (options.headless && options.screenshot.empty() && options.visibility.empty() && options.bench.empty() &&
-        !options.metrics && options.record.empty() && options.sweeps.empty())
+        !options.metrics && options.record.empty() && options.sweeps.empty() && options.video.empty())
       options.screenshot = "lab" + number + ".png";  // a headless run asked for nothing: a picture
     App app(options, lab->board().heading());
     app.host(std::move(lab));
     if (!options.sweeps.empty()) {
       if (const int code = app.sweep(); code != 0) return code;
       record.set("sweep", true);
+    } else if (!options.video.empty()) {
+      app.recordVideo();
+      app.finish(record);
     } else {
       app.loop();
       app.finish(record);
@@ -146,6 +149,7 @@ int App::runLab(int argc, char** argv, std::unique_ptr<Lab> lab) {
 }
 
 App::App(const Options& options, const std::string& title) : options_(options) {
+  if (options_.frames < 0 && !options_.video.empty()) options_.frames = 90;
   if (options_.frames < 0 && (options_.headless || !options_.bench.empty()))
     options_.frames = options_.bench.empty() ? 1 : 60;
   wall_.warmup = options_.bench.empty() ? 0 : std::min(10, options_.frames / 4);

@@ -62,6 +62,8 @@ class App {
   void frame(float dt);
   /// Runs --sweep; returns the exit code.
   int sweep();
+  /// --record-video: renders the frames one by one (the --animate setting moving) into a video.
+  void recordVideo();
   /// Measures after the loop if asked, writes the requested files, and fills `record`.
   void finish(RunRecord& record);
   /// Shows presenter step `k` of the lab's demo.json (from 1; 0 leaves presenter mode); throws

@@ -21,6 +21,7 @@ class Settings;
 /// their median and spread (10th to 90th percentile), the same statistics --sweep prints.
 class RollingTimes {
  public:
+  /// Keeps the last `capacity` frames.
   explicit RollingTimes(size_t capacity = 60) : capacity_(capacity) {}
   /// Adds one frame's time.
   void add(double ms);

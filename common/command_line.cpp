@@ -97,6 +97,18 @@ const OptionSpec kOptions[] = {
      [](Options& o, const std::string& v) { o.sweeps.push_back(parseSweep(v)); }},
     {"--sweep-csv", "F.csv", "with --sweep: also write the table as CSV",
      [](Options& o, const std::string& v) { o.sweepCsv = v; }},
+    {"--record-video", "F.mp4",
+     "render --frames frames (default 90) one by one into a video (.mp4, .webm or .gif; "
+     "ffmpeg); with --animate and a split screen, motion side by side",
+     [](Options& o, const std::string& v) { o.video = v; }},
+    {"--animate", "key=a:b", "with --record-video: the setting goes from a to b over the frames (e.g. path.step=1:90)",
+     [](Options& o, const std::string& v) { o.animate = v; }},
+    {"--fps", "N", "with --record-video: frames per second (default 30)",
+     [](Options& o, const std::string& v) { o.fps = parseCount("--fps", v); }},
+    {"--show-flips", nullptr,
+     "with --record-video: each frame (each half of a split screen) says the share of its pixels whose shadow "
+     "changed since the frame before",
+     [](Options& o, const std::string&) { o.showFlips = true; }},
     {"--rounds", "N", "with --sweep: time every row N times, in interleaved rounds (A B C A B C ...; default 5)",
      [](Options& o, const std::string& v) { o.rounds = parseCount("--rounds", v); }},
     {"--demo-step", "N",

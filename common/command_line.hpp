@@ -37,6 +37,10 @@ struct Options {
   long long vary = -1;            ///< --vary SEED: perturb the scene's lights and cameras (-1: no)
   std::string sweepCsv;           ///< --sweep-csv F.csv
   int rounds = 5;                 ///< --rounds N: a sweep times every row N times, interleaved
+  std::string video;              ///< --record-video F.mp4|.webm|.gif
+  std::string animate;            ///< --animate key=a:b: a setting from a to b over the frames
+  int fps = 30;                   ///< --fps N: the video's frame rate
+  bool showFlips = false;         ///< --show-flips: each frame says how much of its shadow changed
   glm::ivec2 size{960, 540};      ///< --size WxH
   int frames = -1;                ///< --frames N (-1: until the window closes; headless 1, bench 60)
   int demoStep = 0;               ///< --demo-step N: presenter step N of demo.json (0: none)

@@ -22,10 +22,17 @@ std::u32string decodeUtf8(const std::string& text);
 /// use. Glyph metrics are in em units (1 = the font's size in pixels).
 class FontAtlas {
  public:
+  /// One glyph: where it is in the atlas and where it goes on the line.
   struct Glyph {
-    float u0, v0, u1, v1;  ///< the glyph's rectangle in the atlas (0..1)
-    float x0, y0, x1, y1;  ///< where it goes, in em, from the pen on the baseline (y down)
-    float advance;         ///< how far the pen moves, in em
+    float u0;       ///< the glyph's rectangle in the atlas (0..1): left
+    float v0;       ///< top
+    float u1;       ///< right
+    float v1;       ///< bottom
+    float x0;       ///< where it goes, in em, from the pen on the baseline (y down): left
+    float y0;       ///< top
+    float x1;       ///< right
+    float y1;       ///< bottom
+    float advance;  ///< how far the pen moves, in em
   };
   /// Loads the font and bakes the atlas (needs a GL context); throws wb::Error when it cannot.
   explicit FontAtlas(const std::filesystem::path& ttf);
@@ -33,8 +40,8 @@ class FontAtlas {
   const Glyph& glyph(char32_t c) const;
   /// The width of `text` in em.
   float width(const std::u32string& text) const;
-  float ascent() const { return ascent_; }  ///< from the baseline up, in em
-  GLuint texture() const { return texture_.id(); }
+  float ascent() const { return ascent_; }          ///< from the baseline up, in em
+  GLuint texture() const { return texture_.id(); }  ///< the atlas (GL_R8, 0.5 on the outline)
 
  private:
   std::map<char32_t, Glyph> glyphs_;

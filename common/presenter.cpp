@@ -98,8 +98,9 @@ std::vector<DemoStep> loadDemo(const std::filesystem::path& file) {
     for (const auto& [key, value] : sets.items()) common.push_back(key + "=" + valueText(value));
     for (const auto& s : j.at("steps")) ++k, steps.push_back(readStep(s, common));
   } catch (const std::exception& e) {
-    throw UsageError(file.string() + (k ? ", step " + std::to_string(k) : std::string()) + ": " + e.what() +
-                     " (a step has title, caption, settings, bookmark, and optionally compare and measure)");
+    throw UsageError(
+        file.string() + (k ? ", step " + std::to_string(k) : std::string()) + ": " + e.what() +
+        " (a step has title, caption, settings, bookmark, and optionally compare, measure, clip and same_picture)");
   }
   if (steps.empty()) throw UsageError(file.string() + " has no steps");
   return steps;

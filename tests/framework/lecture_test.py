@@ -4,7 +4,8 @@
 usage: lecture_test.py BUILD_DIR OUT_DIR
   demo_steps   every step of every lab's demo.json (and the showcase's) renders headlessly with its
                settings, bookmark and split screen, and says so in its record; a step that does not
-               exist is a clear usage error
+               exist is a clear usage error; two consecutive steps differ in more than 0.5 % of their
+               pixels, unless the second says "same_picture" (why: only its numbers change)
   present      present.srgb and present.grid change the colour and never the visibility buffer
   hosted       the showcase draws a technique with the lab's own code: its visibility buffer is the
                lab's own, byte for byte, on the same scene with the same settings
@@ -20,6 +21,8 @@ import sys
 
 BUILD, OUT = sys.argv[1], sys.argv[2]
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "tools", "windows"))
+from compare_png import read_png  # noqa: E402  (width, height, pixels as tuples)
 SIZE = ["--size", "320x180"]
 failures = []
 
@@ -57,6 +60,11 @@ def pfm(path):
     return struct.unpack(("<" if little else ">") + "%df" % (w * h), lines[3][:4 * w * h])
 
 
+def changed_share(a, b):
+    """The share of pixels that differ by more than 2/255 in a channel."""
+    return sum(1 for p, q in zip(a, b) if max(abs(x - y) for x, y in zip(p, q)) > 2) / max(1, len(b))
+
+
 def demo_steps():
     labs = sorted(os.path.basename(os.path.dirname(d)) for d in glob.glob(os.path.join(ROOT, "labs/*/demo.json")))
     assert len(labs) == 10, "every lab has a demo.json (found %d)" % len(labs)
@@ -65,13 +73,32 @@ def demo_steps():
     for exe, path in cases:
         steps = json.load(open(path))["steps"]
         assert 3 <= len(steps) <= 10, "%s has %d steps" % (path, len(steps))
+        previous = None
         for k in range(1, len(steps) + 1):
             record = os.path.join(OUT, "%s-step%d.json" % (exe, k))
-            run(exe, ["--demo-step", str(k), "--record", record, "--quiet"])
+            png = os.path.join(OUT, "%s-step%d.png" % (exe, k))
+            run(exe, ["--demo-step", str(k), "--record", record, "--quiet", "--screenshot", png])
+            pixels = read_png(png)[2]
+            if previous is not None:
+                share = changed_share(previous, pixels)
+                same = steps[k - 1].get("same_picture")
+                assert share > 0.005 or same, ("%s step %d (\"%s\") draws the picture of step %d (%.2f %% of the "
+                                               "pixels differ): show something new, or say \"same_picture\": why"
+                                               % (path, k, steps[k - 1]["title"], k - 1, 100 * share))
+            previous = pixels
             got = json.load(open(record))["demo_step"]
             assert got["step"] == k and got["title"] == steps[k - 1]["title"], "%s step %d: record %s" % (exe, k, got)
             if steps[k - 1].get("measure"):
                 assert got["numbers"].startswith("measured:"), "%s step %d measures: %s" % (exe, k, got)
+    # The check above can fail: two steps that differ only in their words draw the same pixels.
+    twice = os.path.join(OUT, "twice_demo.json")
+    same = {"title": "t", "caption": "c", "settings": {"bias.method": "slope"}, "bookmark": 1}
+    json.dump({"steps": [same, dict(same, title="t2", caption="other words")]}, open(twice, "w"))
+    shots = []
+    for k in (1, 2):
+        shots.append(os.path.join(OUT, "twice%d.png" % k))
+        run("lab02_solution", ["--demo", twice, "--demo-step", str(k), "--quiet", "--screenshot", shots[-1]])
+    assert changed_share(read_png(shots[0])[2], read_png(shots[1])[2]) <= 0.005, "two identical steps differ"
     bad = run("lab02_solution", ["--demo-step", "99"], expect=2)
     assert "steps 1 to" in bad.stderr, bad.stderr
     # --demo FILE: an edited demo is tried without touching the lab's; a malformed one is named.

@@ -189,6 +189,7 @@ def main(argv=None) -> int:
         for deck in decks:
             # 2. Render, 3. substitute, 4. pandoc.
             render_steps(deck, prefix, build_dir, out, args.render_timeout, args.reuse_renders)
+            render_clips(deck, prefix, build_dir, out, args.render_timeout)
             md = srcdir / f"{deck.name}.md"
             md.write_text(substituted_markdown(deck), encoding="utf-8")
             ast = pandoc_ast(pandoc, md, out)
@@ -239,7 +240,10 @@ def main(argv=None) -> int:
                      "expected_slides": len(structure["slides"]), "has_title_slide": structure["has_title"],
                      "math": math, "dollar_lines": sum(1 for _, t in scannable_lines(deck.lines) if "$" in t),
                      "math_font": deck_font[0] if deck_font else None,
-                     "figure_slides": sorted({f["slide"] for f in figures}), "figures": figures, "numbers": numbers}
+                     "figure_slides": sorted({f["slide"] for f in figures}), "figures": figures, "numbers": numbers,
+                     "clips": [{"step": u.step, "line": u.line, "caption": u.caption,
+                                "webm": deck.clips[u.step].relative_to(out).as_posix(),
+                                "bytes": deck.clips[u.step].stat().st_size} for u in deck.uses if u.kind == "clip"]}
             entries.append(entry)
             print(f"slides: {rel(html_path)}: {entry['expected_slides']} slides, {len(figures)} figures, "
                   f"{math} equations, {entry['bytes'] / 1e6:.1f} MB" + (f"; {rel(pdf)}" if pdf else ""))

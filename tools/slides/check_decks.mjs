@@ -196,6 +196,35 @@ async function checkDeck(browser, deck, dir, shotsDir, timeoutMs, allShots) {
       matched++;
     });
 
+    // (c') clips: inlined WebM that the browser decodes and plays (currentTime moves)
+    const clips = deck.clips || [];
+    const videos = await page.evaluate(async () => {
+      const R = window.Reveal;
+      const out = [];
+      for (const v of Array.from(document.querySelectorAll('.reveal .slides video'))) {
+        const at = R.getIndices(v.closest('section'));
+        R.slide(at.h, at.v);
+        v.muted = true;
+        let played = '';
+        try { await v.play(); } catch (e) { played = String(e); }
+        const t0 = v.currentTime;
+        await new Promise((res) => setTimeout(res, 1500));
+        out.push({ src: (v.getAttribute('src') || '').slice(0, 40), type: (v.getAttribute('src') || '').split(';')[0],
+          w: v.videoWidth, h: v.videoHeight, moved: v.currentTime - t0, state: v.readyState, error: v.error ? v.error.code : 0,
+          played });
+      }
+      return out;
+    });
+    if (videos.length !== clips.length) fail(`the deck has ${videos.length} video(s), the manifest ${clips.length} clip(s)`);
+    videos.forEach((v, n) => {
+      const what = `clip ${n + 1} (step ${clips[n] ? clips[n].step : '?'})`;
+      if (v.type !== 'data:video/webm') fail(`${what}: not inlined as data:video/webm (src ${v.src})`);
+      else if (v.error || v.played || !(v.w > 0) || !(v.moved > 0.2)) {
+        fail(`${what}: does not play (error ${v.error}, ${v.played || 'play() ok'}, ${v.w}x${v.h}, ` +
+          `advanced ${v.moved.toFixed(2)} s in 1.5 s)`);
+      } else notes.push(`${what}: plays (${v.w}x${v.h}, ${v.moved.toFixed(2)} s in 1.5 s)`);
+    });
+
     // (d) math
     if ((deck.dollar_lines || 0) > 0 && info.math === 0) fail(`the Markdown has $ on ${deck.dollar_lines} line(s) but the deck has no <math>`);
     else if ((deck.math || 0) > 0 && info.math === 0) fail(`the Markdown has ${deck.math} equation(s) but the deck has no <math>`);

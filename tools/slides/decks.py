@@ -27,6 +27,10 @@ RENDER_SIZE = "1280x720"
 DEFAULT_RENDERER = "{build_dir}/lab{lab}_solution"
 MIN_PANDOC = (2, 10)  # the first pandoc whose revealjs template is written for reveal.js 4
 FIGURE_RE = re.compile(r"^step:(\d+)$")
+# ![caption](clip:K): demo step K in motion, as its "clip" entry says (a setting animated over frames).
+CLIP_RE = re.compile(r"^clip:(\d+)$")
+CLIP_SIZE = "960x540"
+CLIP_MAX_BYTES = 2_000_000
 # ![caption](target "title"){attrs}: a caption may hold one level of brackets (links, spans).
 IMAGE_RE = re.compile(r"!\[((?:[^\[\]\\]|\\.|\[[^\]]*\])*)\]\(\s*(<[^>]*>|[^)\s]*)((?:\s+\"[^\"]*\")?)\s*\)")
 REF_IMAGE_RE = re.compile(r"!\[(?:[^\[\]\\]|\\.)*\]\[[^\]]*\]")
@@ -50,7 +54,7 @@ class SetupError(Exception):
 
 @dataclass
 class Use:
-    kind: str  # "figure" or "numbers"
+    kind: str  # "figure", "clip" or "numbers"
     step: int
     line: int  # 1-based line in the deck
     caption: str = ""
@@ -66,6 +70,7 @@ class Deck:
     steps: list = field(default_factory=list)  # demo.json steps
     uses: list = field(default_factory=list)
     renders: dict = field(default_factory=dict)  # step -> {"png": Path, "json": Path, "record": dict}
+    clips: dict = field(default_factory=dict)  # step -> the rendered clip (a WebM file)
 
 
 
@@ -148,6 +153,18 @@ def scan_deck(deck: Deck) -> list:
         for m in IMAGE_RE.finditer(text):
             target = m.group(2).strip("<>")
             fm = FIGURE_RE.match(target)
+            cm = CLIP_RE.match(target)
+            if cm:
+                k = int(cm.group(1))
+                if not check_step(k, no, f"clip ![...](clip:{k})"):
+                    continue
+                clip = deck.steps[k - 1].get("clip")
+                if not isinstance(clip, dict) or not isinstance(clip.get("animate"), str):
+                    problems.append(f"{where}:{no}: clip:{k}: step {k} of {rel(deck.demo)} has no \"clip\": "
+                                    "{\"animate\": \"key=from:to\", \"frames\": N, \"flips\": true|false}")
+                    continue
+                deck.uses.append(Use("clip", k, no, m.group(1)))
+                continue
             if not fm:
                 problems.append(f"{where}:{no}: image '{target}': a deck's only images are demo steps, "
                                 f"written ![caption](step:K) (K = a step of {rel(deck.demo)})")

@@ -31,6 +31,7 @@ HEAD_INCLUDE = r"""<style>
 .reveal .slides section > figure + ul, .reveal .slides section > figure + p { margin-top: 0.3em; }
 .reveal figure img { display: block; margin: 0 auto; max-width: 100%; max-height: 500px;
   width: auto; height: auto; object-fit: contain; }
+.reveal figure.clip video { display: block; margin: 0 auto; max-width: 100%; max-height: 480px; }
 .reveal figcaption { font-size: 0.5em; line-height: 1.3; margin-top: 0.3em; color: #444; }
 .reveal .numbers { font-size: 0.55em; font-variant-numeric: tabular-nums; color: #1a5e8a; }
 .reveal math[display="block"] { margin: 0.4em auto; }

@@ -70,7 +70,7 @@ def render_command(prefix: str, deck: Deck, build_dir: Path, step: int, png: Pat
 def render_steps(deck: Deck, prefix: str, build_dir: Path, out: Path, timeout: float, reuse: bool) -> None:
     rdir = out / "renders" / deck.name
     rdir.mkdir(parents=True, exist_ok=True)
-    wanted = sorted({u.step for u in deck.uses})
+    wanted = sorted({u.step for u in deck.uses if u.kind != "clip"})
     for k in wanted:
         step = deck.steps[k - 1]
         measure = step.get("measure") is True
@@ -134,6 +134,35 @@ def render_steps(deck: Deck, prefix: str, build_dir: Path, out: Path, timeout: f
         deck.renders[k] = {"png": png, "json": rec, "record": record, "command": shown}
 
 
+def render_clips(deck: Deck, prefix: str, build_dir: Path, out: Path, timeout: float) -> None:
+    """Renders every clip:K of the deck into renders/NAME/clipKK.webm (the lab's --record-video)."""
+    rdir = out / "renders" / deck.name
+    rdir.mkdir(parents=True, exist_ok=True)
+    for k in sorted({u.step for u in deck.uses if u.kind == "clip"}):
+        clip = deck.steps[k - 1]["clip"]
+        webm = rdir / f"clip{k:02d}.webm"
+        words = [w.replace("{lab}", deck.lab).replace("{name}", deck.name).replace("{build_dir}", str(build_dir))
+                 for w in shlex.split(prefix)]
+        cmd = words + ["--headless", "--size", CLIP_SIZE, "--demo-step", str(k), "--quiet", "--record-video", str(webm),
+                       "--frames", str(int(clip.get("frames", 60))), "--animate", clip["animate"]]
+        if clip.get("flips"):
+            cmd.append("--show-flips")
+        shown = " ".join(shlex.quote(c) for c in cmd)
+        webm.unlink(missing_ok=True)
+        print(f"slides: lab {deck.lab} step {k}: rendering its clip", flush=True)
+        try:
+            proc = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=timeout)
+        except subprocess.TimeoutExpired as e:
+            raise BuildError(f"lab {deck.lab} clip {k}: the render took more than {timeout:g} s\n  command: {shown}") from e
+        if proc.returncode != 0 or not webm.is_file():
+            raise BuildError(f"lab {deck.lab} clip {k} ({rel(deck.source)}): the render failed (exit status "
+                             f"{proc.returncode})\n  command: {shown}\n{tail(proc.stderr or proc.stdout)}")
+        if webm.stat().st_size > CLIP_MAX_BYTES:
+            raise BuildError(f"lab {deck.lab} clip {k}: {rel(webm)} is {webm.stat().st_size / 1e6:.1f} MB, more than "
+                             f"{CLIP_MAX_BYTES / 1e6:.0f} MB (fewer frames in its \"clip\", or a shorter path)")
+        deck.clips[k] = webm
+
+
 def format_number(value: float) -> str:
     v = abs(value)
     if v != 0 and v < 1:
@@ -178,6 +207,12 @@ def substituted_markdown(deck: Deck) -> str:
         spans = []
         for m in IMAGE_RE.finditer(text):
             fm = FIGURE_RE.match(m.group(2).strip("<>"))
+            cm = CLIP_RE.match(m.group(2).strip("<>"))
+            if cm:  # a clip: a video that plays by itself, in a loop, silent (inlined by pandoc)
+                webm = deck.clips[int(cm.group(1))]
+                spans.append((m.start(), m.end(), f'<figure class="clip"><video src="renders/{deck.name}/{webm.name}" '
+                                                  f'autoplay loop muted playsinline title="{html.escape(m.group(1))}">'
+                                                  f'</video><figcaption>{html.escape(m.group(1))}</figcaption></figure>'))
             if fm:
                 k = int(fm.group(1))
                 png = deck.renders[k]["png"]
