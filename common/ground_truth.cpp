@@ -222,7 +222,24 @@ std::vector<uint8_t> artifactHeatmap(const FloatImage& rendered, const FloatImag
     if (e >= 0.5f && r < 0.5f) px[0] = 255, px[1] = 40, px[2] = 40;   // acne
     if (e < 0.5f && r >= 0.5f) px[0] = 40, px[1] = 110, px[2] = 255;  // leak
   }
-  return rgba;
+  return widenMarks(rgba, exact.width);
+}
+
+std::vector<uint8_t> widenMarks(const std::vector<uint8_t>& rgba, int width) {
+  // A mark is a pixel of acne (red) or leak (blue); each becomes a 2x2 block, so that a single pixel
+  // can be seen on a projector. Only the grey around marks is painted over, never another mark.
+  auto mark = [&](size_t i) { return rgba[4 * i] == 255 || rgba[4 * i + 2] == 255; };
+  std::vector<uint8_t> out = rgba;
+  const size_t n = rgba.size() / 4, w = size_t(std::max(1, width));
+  for (size_t i = 0; i < n; ++i) {
+    if (!mark(i)) continue;
+    const size_t x = i % w;
+    for (size_t j : {i + 1, i + w, i + w + 1}) {
+      if (j >= n || (j % w) < x || mark(j)) continue;  // (the row's end; another mark)
+      std::copy(&rgba[4 * i], &rgba[4 * i] + 4, &out[4 * j]);
+    }
+  }
+  return out;
 }
 
 }  // namespace wb

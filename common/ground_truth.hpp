@@ -119,5 +119,8 @@ double contactGapTexels(const FloatImage& rendered, const FloatImage& exact, con
 /// leaks in blue, the rest dark (rows bottom to top).
 std::vector<uint8_t> artifactHeatmap(const FloatImage& rendered, const FloatImage& exact,
                                      const std::vector<glm::vec4>& positions);
+/// The heatmap's marks (red acne, blue leaks) widened to 2x2 pixels over the grey beside them, so
+/// that one pixel's mistake shows on a projector; `width` is the picture's width.
+std::vector<uint8_t> widenMarks(const std::vector<uint8_t>& rgba, int width);
 
 }  // namespace wb

@@ -526,6 +526,28 @@ TEST_F(GlTest, PcfReferenceFiltersAStepOverTheFootprint) {
   }
 }
 
+// A heatmap's one-pixel mark becomes a 2x2 block over the grey, never over another mark, and never
+// wraps to the next row.
+TEST(GroundTruth, HeatmapMarksAreTwoPixelsWide) {
+  const int w = 4, h = 3;
+  std::vector<uint8_t> rgba(size_t(w * h) * 4, 150);
+  auto set = [&](int x, int y, uint8_t r, uint8_t g, uint8_t b) {
+    uint8_t* p = &rgba[size_t(4 * (y * w + x))];
+    p[0] = r, p[1] = g, p[2] = b, p[3] = 255;
+  };
+  set(0, 0, 255, 40, 40);   // acne at (0, 0)
+  set(1, 1, 40, 110, 255);  // a leak where the acne's block would reach
+  set(3, 1, 255, 40, 40);   // acne in the last column
+  const std::vector<uint8_t> out = wb::widenMarks(rgba, w);
+  auto red = [&](int x, int y) { return out[size_t(4 * (y * w + x))] == 255; };
+  auto blue = [&](int x, int y) { return out[size_t(4 * (y * w + x)) + 2] == 255; };
+  EXPECT_TRUE(red(0, 0) && red(1, 0) && red(0, 1)) << "the acne pixel's 2x2 block";
+  EXPECT_TRUE(blue(1, 1) && !red(1, 1)) << "another mark is never painted over";
+  EXPECT_TRUE(blue(2, 1) && blue(1, 2) && blue(2, 2)) << "the leak's block";
+  EXPECT_TRUE(red(3, 2)) << "the last column's mark grows down";
+  EXPECT_FALSE(red(0, 2)) << "and does not wrap to column 0 of the next row";
+}
+
 // Against a reference: light-facing pixels only, lighter or darker by more than 0.1, in a column range.
 TEST(GroundTruth, ReferenceDifferenceCountsLighterAndDarker) {
   const wb::FloatImage rendered{5, 1, {0.5f, 0.9f, 0.2f, 1.0f, 0.0f}};
