@@ -89,7 +89,10 @@ function decodeDataUri(uri) {
   return { type: m[1], bytes: Buffer.from(m[3], 'base64') };
 }
 
-async function checkDeck(browser, deck, dir, shotsDir, timeoutMs, allShots) {
+// A lecture hall's projector is 1920x1080 as often as 1280x720: every deck is checked at both.
+const VIEWPORTS = [[1280, 720], [1920, 1080]];
+
+async function checkDeck(browser, deck, dir, shotsDir, timeoutMs, allShots, viewport = VIEWPORTS[0]) {
   const failures = [];
   const notes = [];
   const fail = (s) => failures.push(s);
@@ -98,7 +101,7 @@ async function checkDeck(browser, deck, dir, shotsDir, timeoutMs, allShots) {
 
   const page = await browser.newPage();
   try {
-    await page.setViewport({ width: 1280, height: 720, deviceScaleFactor: 1 });
+    await page.setViewport({ width: viewport[0], height: viewport[1], deviceScaleFactor: 1 });
     const external = new Set();
     const failed = [];
     const errors = [];
@@ -386,19 +389,26 @@ async function main() {
   let failedDecks = 0;
   try {
     for (const deck of decks) {
-      let result;
-      try {
-        result = await checkDeck(browser, deck, dir, shotsDir, opts.timeout * 1000, opts.allShots);
-      } catch (e) {
-        result = { failures: [`the check itself failed: ${String(e.message || e).split('\n')[0]}`], notes: [] };
+      let failedHere = false;
+      for (const viewport of VIEWPORTS) {
+        const where = `${deck.name} at ${viewport[0]}x${viewport[1]}`;
+        const shots = viewport === VIEWPORTS[0] ? shotsDir : path.join(shotsDir, `${viewport[0]}x${viewport[1]}`);
+        mkdirSync(shots, { recursive: true });
+        let result;
+        try {
+          result = await checkDeck(browser, deck, dir, shots, opts.timeout * 1000, opts.allShots, viewport);
+        } catch (e) {
+          result = { failures: [`the check itself failed: ${String(e.message || e).split('\n')[0]}`], notes: [] };
+        }
+        if (result.failures.length) {
+          failedHere = true;
+          console.log(`FAIL ${where}: ${result.failures.join('; ')}`);
+        } else {
+          console.log(`PASS ${where}: ${result.summary}`);
+        }
+        for (const n of result.notes) console.log(`     ${where}: ${n}`);
       }
-      if (result.failures.length) {
-        failedDecks++;
-        console.log(`FAIL ${deck.name}: ${result.failures.join('; ')}`);
-      } else {
-        console.log(`PASS ${deck.name}: ${result.summary}`);
-      }
-      for (const n of result.notes) console.log(`     ${deck.name}: ${n}`);
+      if (failedHere) failedDecks++;
     }
   } finally {
     await browser.close().catch(() => {});
