@@ -34,6 +34,8 @@ class HostedLab {
   void render(Lab& host, float dt);
   /// The lab's own widgets.
   void ui();
+  /// Gives the host this lab's warnings again at the next render (a host that cleared its own).
+  void resendWarnings() { warningsSeen_ = 0; }
   /// The settings a host shows for this lab: all but camera.bookmark (the host's camera is shared).
   static bool shown(const Setting& s) { return s.name != "camera.bookmark"; }
 

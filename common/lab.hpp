@@ -159,6 +159,8 @@ class Lab {
   float alphaCutoff() const { return alphaCutoff_; }
   /// A warning shown in the info panel (and printed once on stderr).
   void warn(const std::string& message);
+  /// Forgets the warnings shown (a host that switches the lab it shows: the showcase).
+  void clearWarnings() { warnings_.clear(); }
 
   /// Times a pass's GPU work until it is destroyed.
   using PassTimer = GpuTimers::Scope;

@@ -148,6 +148,8 @@ class Showcase : public wb::Lab {
 
   // The settings shown are the showcase's own and the chosen technique's (they write its lab's values).
   void adopt() {
+    clearWarnings();  // the warnings shown are the technique's own (a cube map's stays with the cube map)
+    hosted[size_t(technique)]->resendWarnings();
     settings = own;
     settings.include(hosted[size_t(technique)]->lab().tunables(), wb::HostedLab::shown);
     shown = technique;
