@@ -15,6 +15,10 @@ add_library(wb_imgui INTERFACE)
 set(WB_IMGUI_DIR "" CACHE PATH "Dear ImGui's source folder, where no package provides it (macOS)")
 find_package(imgui CONFIG QUIET)
 if(WB_IMGUI_DIR)
+  if(NOT EXISTS ${WB_IMGUI_DIR}/imgui.cpp OR NOT EXISTS ${WB_IMGUI_DIR}/backends/imgui_impl_glfw.cpp)
+    message(FATAL_ERROR "WB_IMGUI_DIR=${WB_IMGUI_DIR} has no Dear ImGui sources (imgui.cpp, backends/). Get them "
+                        "with: git clone --depth 1 https://github.com/ocornut/imgui ${WB_IMGUI_DIR}")
+  endif()
   add_library(wb_imgui_sources STATIC
     ${WB_IMGUI_DIR}/imgui.cpp ${WB_IMGUI_DIR}/imgui_draw.cpp ${WB_IMGUI_DIR}/imgui_tables.cpp
     ${WB_IMGUI_DIR}/imgui_widgets.cpp ${WB_IMGUI_DIR}/backends/imgui_impl_glfw.cpp

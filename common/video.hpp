@@ -12,7 +12,8 @@ namespace wb {
 /// --animate key=a:b: the setting's value in each of `frames` frames, from a to b, evenly.
 struct Animation {
   std::string key;          ///< the setting
-  double from = 0, to = 0;  ///< its first and last value
+  double from = 0;          ///< its value in the first frame
+  double to = 0;            ///< its value in the last frame
   /// The value at frame `k` of `frames`, as the setting's text ("12" for whole numbers).
   std::string valueAt(int k, int frames) const;
 };
