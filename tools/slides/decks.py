@@ -31,6 +31,7 @@ FIGURE_RE = re.compile(r"^step:(\d+)$")
 CLIP_RE = re.compile(r"^clip:(\d+)$")
 CLIP_SIZE = "960x540"
 CLIP_MAX_BYTES = 2_000_000
+BENCH_FRAMES = 40  # a measured step's render times this many frames (--bench: 10 warm-up, 30 timed)
 # ![caption](target "title"){attrs}: a caption may hold one level of brackets (links, spans).
 IMAGE_RE = re.compile(r"!\[((?:[^\[\]\\]|\\.|\[[^\]]*\])*)\]\(\s*(<[^>]*>|[^)\s]*)((?:\s+\"[^\"]*\")?)\s*\)")
 REF_IMAGE_RE = re.compile(r"!\[(?:[^\[\]\\]|\\.)*\]\[[^\]]*\]")

@@ -62,9 +62,55 @@ def render_command(prefix: str, deck: Deck, build_dir: Path, step: int, png: Pat
         words.append(w.replace("{lab}", deck.lab).replace("{name}", deck.name).replace("{build_dir}", str(build_dir)))
     words += ["--headless", "--size", RENDER_SIZE, "--demo-step", str(step), "--screenshot", str(png),
               "--record", str(rec), "--quiet"]
-    if measure:
-        words.append("--metrics")
+    if measure:  # the numbers, and what the frame costs, from the same build and the same render
+        words += ["--metrics"]
+        if not deck.steps[step - 1].get("compare"):  # (a split frame's cost is neither half's: below)
+            words += ["--bench", str(rec.with_suffix(".bench.csv")), "--frames", str(BENCH_FRAMES)]
     return words
+
+
+def bench_halves(deck: Deck, prefix: str, build_dir: Path, k: int, rec: Path, timeout: float) -> None:
+    """A measured split-screen step: each half's setting alone, timed (--bench) as a whole frame, from
+    a copy of the demo whose step K has no split screen; writes stepKK.a.bench.csv and .b.bench.csv."""
+    demo = json.loads(deck.demo.read_text(encoding="utf-8"))
+    step = demo["steps"][k - 1]
+    for side in ("a", "b"):
+        alone = dict(step, settings=dict(step.get("settings", {}), **{step["compare"]["key"]: step["compare"][side]}))
+        alone.pop("compare"), alone.pop("measure", None)
+        path = rec.with_suffix(f".{side}.demo.json")
+        path.write_text(json.dumps(dict(demo, steps=demo["steps"][: k - 1] + [alone] + demo["steps"][k:])), "utf-8")
+        words = [w.replace("{lab}", deck.lab).replace("{name}", deck.name).replace("{build_dir}", str(build_dir))
+                 for w in shlex.split(prefix)]
+        cmd = words + ["--headless", "--size", RENDER_SIZE, "--demo", str(path), "--demo-step", str(k), "--quiet",
+                       "--bench", str(rec.with_suffix(f".{side}.bench.csv")), "--frames", str(BENCH_FRAMES)]
+        proc = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=timeout)
+        if proc.returncode != 0:
+            raise BuildError(f"lab {deck.lab} step {k}: timing the {side} half failed\n  command: "
+                             f"{' '.join(shlex.quote(c) for c in cmd)}\n{tail(proc.stderr)}")
+
+
+SIZE_TEXT = RENDER_SIZE.replace("x", "\u00d7")  # "1280×720"
+
+
+def frame_ms(csv_path: Path):
+    """The wall-clock ms per timed frame of a --bench CSV, or None."""
+    import csv
+    try:
+        rows = list(csv.reader(open(csv_path, newline="")))
+        return next(float(r[4]) for r in rows[1:] if len(r) > 4 and r[3] == "frame_wall")
+    except (OSError, StopIteration, ValueError):
+        return None
+
+
+def frame_cost(rec: Path) -> str:
+    """' · frame 23.4 ms' (a split screen: each half's setting timed alone), or ''."""
+    whole = frame_ms(rec.with_suffix(".bench.csv"))
+    if whole is not None:
+        return f" · frame {format_number(whole)}\u00a0ms at {SIZE_TEXT}"
+    a, b = frame_ms(rec.with_suffix(".a.bench.csv")), frame_ms(rec.with_suffix(".b.bench.csv"))
+    if a is None or b is None:
+        return ""
+    return f" · a whole frame of each at {SIZE_TEXT}: left {format_number(a)}\u00a0ms, right {format_number(b)}\u00a0ms"
 
 
 def render_steps(deck: Deck, prefix: str, build_dir: Path, out: Path, timeout: float, reuse: bool) -> None:
@@ -91,7 +137,7 @@ def render_steps(deck: Deck, prefix: str, build_dir: Path, out: Path, timeout: f
         if reuse and png.is_file() and rec.is_file() and stamp_file.is_file() and stamp_file.read_text() == stamp:
             print(f"slides: lab {deck.lab} step {k}: reusing {rel(png)}")
         else:
-            for p in (png, rec, stamp_file):
+            for p in (png, rec, stamp_file, *rdir.glob(f"step{k:02d}.*bench.csv")):
                 p.unlink(missing_ok=True)
             print(f"slides: lab {deck.lab} step {k}: rendering ({step.get('title', '')!s})", flush=True)
             t0 = time.monotonic()
@@ -121,6 +167,8 @@ def render_steps(deck: Deck, prefix: str, build_dir: Path, out: Path, timeout: f
             if problem:
                 raise BuildError(f"lab {deck.lab} step {k} ({rel(deck.source)}): the renderer exited 0 but "
                                  f"{problem}\n  command: {shown}\n  its stderr (last lines):\n{tail(proc.stderr)}")
+            if measure and step.get("compare"):
+                bench_halves(deck, prefix, build_dir, k, rec, timeout)
             stamp_file.write_text(stamp)
             print(f"slides: lab {deck.lab} step {k}: rendered in {time.monotonic() - t0:.1f} s")
         try:
@@ -182,9 +230,10 @@ def numbers_line(deck: Deck, k: int, line: int) -> str:
                          f"  command: {deck.renders[k]['command']}")
     step = record.get("demo_step") or {}
     said = step.get("numbers", "") if isinstance(step, dict) else ""
+    cost = frame_cost(deck.renders[k]["json"])
     if " | " in said:  # a split screen: the presenter's own line, which measures each half on its own
         halves = said.removeprefix("measured: ").split(" | ")
-        return "[" + " · ".join(h.strip().replace("%", "\u00a0%") for h in halves) + "]{.numbers}"
+        return "[" + " · ".join(h.strip().replace("%", "\u00a0%") for h in halves) + cost + "]{.numbers}"
     parts = []
     for key, label, unit in NUMBER_LABELS:
         v = m.get(key)
@@ -193,7 +242,7 @@ def numbers_line(deck: Deck, k: int, line: int) -> str:
     if not parts:
         raise BuildError(f"{where}: the measurement of lab {deck.lab} step {k} has none of "
                          f"{', '.join(k_ for k_, _, _ in NUMBER_LABELS)}")
-    return "[" + " · ".join(parts) + "]{.numbers}"
+    return "[" + " · ".join(parts) + cost + "]{.numbers}"
 
 
 def substituted_markdown(deck: Deck) -> str:
