@@ -1,10 +1,9 @@
 #include "common/app.hpp"
-#include "common/imgui_backends.hpp"
 
 #include "common/context.hpp"
 #include "common/crash_report.hpp"
-#include "common/font.hpp"
 #include "common/image.hpp"
+#include "common/imgui_layer.hpp"
 #include "common/lab.hpp"
 #include "common/variant.hpp"
 
@@ -20,41 +19,6 @@
 namespace fs = std::filesystem;
 
 namespace wb {
-
-// Dear ImGui with its GLFW and OpenGL 3 backends, in the canonical order; shut down in reverse. The
-// panels' text is DejaVu Sans (the frames' labels' font), baked at 32 px and drawn at 16 px times
-// the UI scale (ui.scale), with the symbols the panels print (±, ×, µ, ≤, σ).
-struct App::ImGuiLayer {
-  static constexpr float kBasePixels = 16.0f, kBakePixels = 32.0f;
-  explicit ImGuiLayer(GLFWwindow* window) {
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;
-    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x03BB, 0x03C3, 0x2013, 0x2026, 0x2190, 0x2192, 0x2248, 0x2265, 0};
-    const fs::path ttf = findFontFile();
-    if (!ttf.empty() && ImGui::GetIO().Fonts->AddFontFromFileTTF(ttf.string().c_str(), kBakePixels, nullptr, ranges))
-      bakedPixels_ = kBakePixels;
-    base_ = ImGui::GetStyle();
-    ImGui_ImplGlfw_InitForOpenGL(window, true);
-    ImGui_ImplOpenGL3_Init("#version 410 core");
-  }
-  // Text kBasePixels * scale tall, and the paddings and widgets scaled with it.
-  void setScale(float scale) {
-    if (scale == scale_) return;
-    scale_ = scale;
-    ImGui::GetIO().FontGlobalScale = kBasePixels * scale / bakedPixels_;
-    ImGui::GetStyle() = base_;
-    ImGui::GetStyle().ScaleAllSizes(scale);
-  }
-  float bakedPixels_ = 13.0f;  // ImGui's own font when no TTF is found
-  float scale_ = 0.0f;
-  ImGuiStyle base_;
-  ~ImGuiLayer() {
-    ImGui_ImplOpenGL3_Shutdown();
-    ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
-  }
-};
 
 // ui.scale, or where it is 0, the monitor's content scale, more for a window taller than 1080 rows,
 // and a quarter more while presenting (read from the back of a room).

@@ -31,6 +31,7 @@ namespace wb {
 
 class Context;
 class Lab;
+class ImGuiLayer;
 
 /// Hosts labs in one context; see the file comment.
 class App {
@@ -89,7 +90,6 @@ class App {
 
   Options options_;
   std::unique_ptr<Context> ctx_;  // declared first: destroyed last, after every GL object below
-  struct ImGuiLayer;
   std::unique_ptr<ImGuiLayer> imgui_;
   FrameTarget target_;
   GpuTimers timers_;
