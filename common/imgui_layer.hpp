@@ -10,6 +10,7 @@ struct GLFWwindow;
 
 namespace wb {
 
+/// The ImGui context and its backends for one window (App owns one when it has a window).
 class ImGuiLayer {
  public:
   /// Starts ImGui on `window` (its context current).
