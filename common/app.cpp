@@ -205,6 +205,7 @@ void App::frame(float dt) {
   hotReload();
   applyPresentation();
   lab_->comparison_ = shell_.compare;
+  lab_->applyMotion();
   lab_->update(dt);
   target_.resize(frameSize_);
   drawLab();

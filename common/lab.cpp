@@ -28,6 +28,12 @@ Lab::Lab(std::string defaultScene, ShadowKind kind)
   settings.add("light.index", lightIndex, 0, 7, "which light of the scene casts shadows");
   if (kind == ShadowKind::Map) debug_.addTo(settings);
   settings.add("camera.bookmark", bookmark_, 1, 9, "camera bookmark of the scene file, 1 = the first (keys 1-9)");
+  settings.add("light.orbit", lightOrbit_, -180.0f, 180.0f,
+               "degrees the scene's lights turn about the vertical axis through the origin (a clip: --animate "
+               "light.orbit=0:90)");
+  settings.add("camera.dolly", cameraDolly_, -20.0f, 20.0f,
+               "units the camera stands further back from its bookmark's target (negative: closer; a clip: "
+               "--animate camera.dolly=4:0)");
   settings.add("render.scale", renderScale_, 0.25f, 1.0f,
                "in a window, draw the scene at this fraction of the window's resolution and stretch it (the "
                "panels and captions stay sharp): 0.5 at 1920x1080 costs about what 960x540 does");
@@ -61,6 +67,7 @@ void Lab::adoptScene(Scene s, bool keepLightSize) {
     throw UsageError("light.index=" + std::to_string(lightIndex) + " but " + s.path.string() + " has " +
                      std::to_string(s.lights.size()) + " light(s)");
   scene = std::move(s);
+  baseLights_.clear(), appliedOrbit_ = 0, appliedDolly_ = 0;  // (a new scene's lights are its own)
   const float size = scene.lights[size_t(lightIndex)].size;
   if (lightSizeUsed_ && size > 0 && !keepLightSize) lightSize_ = size;
 }
@@ -99,6 +106,21 @@ void Lab::warn(const std::string& message) {
   if (std::find(warnings_.begin(), warnings_.end(), message) != warnings_.end()) return;
   warnings_.push_back(message);
   std::fprintf(stderr, "warning: %s\n", message.c_str());
+}
+
+void Lab::applyMotion() {
+  if (lightOrbit_ != appliedOrbit_) {
+    if (baseLights_.empty()) baseLights_ = scene.lights;
+    const glm::mat3 turn(glm::rotate(glm::mat4(1), glm::radians(lightOrbit_), glm::vec3(0, 1, 0)));
+    for (size_t k = 0; k < scene.lights.size() && k < baseLights_.size(); ++k)
+      scene.lights[k].position = turn * baseLights_[k].position,
+      scene.lights[k].direction = turn * baseLights_[k].direction;
+    appliedOrbit_ = lightOrbit_;
+  }
+  if (cameraDolly_ != appliedDolly_ && bookmark_ >= 1 && bookmark_ <= int(scene.cameras.size())) {
+    camera.pose.distance = std::max(0.05f, scene.cameras[size_t(bookmark_ - 1)].distance + cameraDolly_);
+    appliedDolly_ = cameraDolly_;
+  }
 }
 
 int Lab::shadowMapSize() {

@@ -179,6 +179,7 @@ class Lab {
   // Takes `scene` as the lab's: light.index must name one of its lights (else wb::UsageError), and
   // that light's size becomes light.size unless `keepLightSize` (the command line names it).
   void adoptScene(Scene scene, bool keepLightSize);
+  void applyMotion();  // light.orbit and camera.dolly, where they changed (the host, every frame)
   bool runExercise(const std::string& id, const std::function<nlohmann::json()>& call,
                    const std::function<void(const nlohmann::json&)>& replay);
   std::string defaultScene_;
@@ -200,6 +201,9 @@ class Lab {
   CompareChoice comparison_;  // the app's split screen, set every frame
   float uiScale_ = 0;         // ui.scale: the panels' text size over 16 px (0: follow the monitor)
   float renderScale_ = 1;     // render.scale: the scene's resolution over the window's (in a window)
+  // Motion for clips (--animate): the lights turned about the vertical axis, the camera moved back.
+  float lightOrbit_ = 0, cameraDolly_ = 0, appliedOrbit_ = 0, appliedDolly_ = 0;
+  std::vector<Light> baseLights_;  // the scene's lights before light.orbit
   struct {
     bool srgb = false;  // present.srgb: encode the colour for the screen (the visibility is untouched)
     bool grid = false;  // present.grid: a faint world-unit grid on the ground
