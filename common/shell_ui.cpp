@@ -11,7 +11,7 @@ namespace wb {
 namespace {
 
 const ImVec4 kRed(1, 0.4f, 0.4f, 1), kGreen(0.5f, 1, 0.5f, 1), kYellow(1, 0.85f, 0.3f, 1), kGrey(0.7f, 0.7f, 0.7f, 1);
-const float kWrapEm = 25;  // the info panel's text width, in font heights: about 330 px at 960x540
+const float kWrapEm = 22;  // the info panel's text width, in font heights: 352 px at 16 px, inside the left 20 % of 1920
 
 // "llvmpipe (LLVM 15.0.6, 256 bits)" -> "llvmpipe": the panel stays narrow; the full name is a tooltip.
 std::string shortName(const std::string& renderer) { return renderer.substr(0, renderer.find(" (")); }
