@@ -242,7 +242,7 @@ void App::drawLab() {
         if (programsOk) lab.render();
         target_.resolve();
       },
-      [&](int side) { sides_[side] = lab.light_; });
+      [&](int side) { sides_[side] = lab.light_; }, !stretched());
   if (!programsOk) {  // a window whose shaders never compiled says so on the frame, not just sky
     const auto bad = std::find_if(lab.programs_.begin(), lab.programs_.end(), [](const Program& p) { return !p.ok(); });
     const std::string where = firstErrorLine(bad->error());

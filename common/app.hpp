@@ -78,6 +78,7 @@ class App {
   void applyUiScale();  // the panels' text size: ui.scale, or the monitor's
   void handleKeys();
   void upscale(int band, glm::ivec2 shown);  // the frame over the window's scene area (render.scale)
+  bool stretched() const { return imgui_ && frameSize_ != viewSize_; }  // render.scale below 1, in a window
   void hotReload();
   void drawLab();
   void presentWindow();

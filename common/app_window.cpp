@@ -123,6 +123,11 @@ void App::presentWindow() {
     else
       upscale(band, shown);
   }
+  if (stretched() && shell_.compare.on && !shell_.compare.key.empty()) {  // the halves' labels, sharp
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, band, shown.x, shown.y);
+    split_.drawLabels(shell_.compare, shown);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, window.x, window.y);
   Lab& lab = *lab_;

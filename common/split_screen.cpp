@@ -7,7 +7,8 @@
 namespace wb {
 
 void SplitScreen::render(FrameTarget& target, Settings& settings, const CompareChoice& choice,
-                         const std::function<void()>& draw, const std::function<void(int side)>& afterDraw) {
+                         const std::function<void()>& draw, const std::function<void(int side)>& afterDraw,
+                         bool labels) {
   const bool split = choice.on && !choice.key.empty();
   if (!split) {
     draw();
@@ -38,8 +39,13 @@ void SplitScreen::render(FrameTarget& target, Settings& settings, const CompareC
   const float white[4] = {1, 1, 1, 1};
   glClearBufferfv(GL_COLOR, 0, white);
   glDisable(GL_SCISSOR_TEST);
+  if (labels) drawLabels(choice, size);
+}
+
+void SplitScreen::drawLabels(const CompareChoice& choice, glm::ivec2 size) {
   // Each half says what it shows, in the picture itself (a headless screenshot has no panels).
   // (as large as a lecture room needs: 2.25 at 540 rows, 4.5 at 1080, and never wider than the half)
+  const int half = size.x / 2;
   const std::string left = choice.key + " = " + choice.a, right = choice.key + " = " + choice.b;
   const float most = size.y >= 400 ? size.y / 240.0f : 1.0f;
   const float scale = std::min(label_.scaleToFit(left, half - 24, most), label_.scaleToFit(right, half - 24, most));

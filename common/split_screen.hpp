@@ -18,8 +18,12 @@ class SplitScreen {
  public:
   /// Calls `draw` once, or with `choice.on` twice (setting `choice.key` to A, then B, then back);
   /// `afterDraw(side)` runs after each (side 0 = left or whole frame, 1 = right).
+  /// With `labels` false the halves' labels are left out of the frame (a window that stretches the
+  /// frame, render.scale, draws them sharp itself with drawLabels()).
   void render(FrameTarget& target, Settings& settings, const CompareChoice& choice, const std::function<void()>& draw,
-              const std::function<void(int side)>& afterDraw);
+              const std::function<void(int side)>& afterDraw, bool labels = true);
+  /// Writes each half's setting at its bottom left, into the bound framebuffer's viewport of `size`.
+  void drawLabels(const CompareChoice& choice, glm::ivec2 size);
 
  private:
   Texture saved_[3];  // the left half's attachments while the right half is drawn
