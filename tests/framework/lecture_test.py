@@ -11,6 +11,8 @@ usage: lecture_test.py BUILD_DIR OUT_DIR
                lab's own, byte for byte, on the same scene with the same settings
   truth        in the showcase, shadow volumes match the ray-traced truth, and the ray-traced view
                itself has no acne and no leak against the exact visibility
+  video        --record-video writes a clip of the frames asked for (ffprobe counts them), in each
+               format; a bad file name or --animate is a usage error
 Prints one line per check; exits 1 if any failed.
 """
 import glob
@@ -165,7 +167,27 @@ def truth():
     run("showcase", ["--quiet", "--compare", "showcase.technique=pcss,ray_traced", "--screenshot", split])
 
 
+def video():
+    import shutil
+    assert shutil.which("ffmpeg") and shutil.which("ffprobe"), "ffmpeg is not installed (sudo apt-get install ffmpeg)"
+    for ext in ("webm", "mp4", "gif"):
+        clip = os.path.join(OUT, "clip." + ext)
+        if os.path.exists(clip):
+            os.remove(clip)
+        run("lab10_solution", ["--quiet", "--compare", "csm.stable=on,off", "--set", "path.step=30", "--animate",
+                               "path.matrices_step=1:12", "--frames", "12", "--show-flips", "--record-video", clip])
+        probe = subprocess.run(["ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+                                "stream=nb_read_frames,width,height", "-of", "csv=p=0", clip],
+                               capture_output=True, text=True)
+        assert probe.stdout.strip().split(",") == ["320", "180", "12"], "%s: ffprobe says %r" % (clip, probe.stdout)
+    bad = run("lab01_solution", ["--record-video", os.path.join(OUT, "clip.avi"), "--frames", "2"], expect=2)
+    assert ".mp4, .webm or .gif" in bad.stderr, bad.stderr
+    bad = run("lab01_solution", ["--record-video", os.path.join(OUT, "x.mp4"), "--animate", "camera.dolly=1"], expect=2)
+    assert "key=from:to" in bad.stderr, bad.stderr
+
+
 os.makedirs(OUT, exist_ok=True)
-for name, f in (("demo_steps", demo_steps), ("present", present), ("hosted", hosted), ("truth", truth)):
+for name, f in (("demo_steps", demo_steps), ("present", present), ("hosted", hosted), ("truth", truth),
+                ("video", video)):
     check(name, f)
 sys.exit(1 if failures else 0)
