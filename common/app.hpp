@@ -111,6 +111,7 @@ class App {
   glm::ivec2 viewSize_{0, 0};  // the window's scene area; frameSize_ is it times render.scale
   Program upscale_;            // render.scale below 1: the frame stretched over viewSize_
   VertexArray emptyVao_;
+  Sampler linear_;            // the stretch's filtering
   bool measureStep_ = false;  // the step asks for numbers: measure after its first frame
   std::string stepNumbers_;   // and show them in the caption band
   LightView sides_[2];

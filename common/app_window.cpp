@@ -2,7 +2,6 @@
 // the ImGui shell over the frame, the presenter's caption band, and window screenshots.
 #include "common/app.hpp"
 #include "common/imgui_backends.hpp"
-#include "common/texture_io.hpp"
 
 #include "common/context.hpp"
 #include "common/image.hpp"
@@ -167,19 +166,22 @@ void App::presentWindow() {
 void App::upscale(int band, glm::ivec2 shown) {
   if (!upscale_.ok())
     upscale_ = Program({{GL_VERTEX_SHADER, "wb/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "wb/upscale.frag"}});
-  if (!emptyVao_.id()) emptyVao_ = makeEmptyVertexArray();
+  if (!emptyVao_.id()) {
+    emptyVao_ = makeEmptyVertexArray();
+    linear_ = makePlainSampler();  // (clamped; filtered linearly for the stretch)
+    glSamplerParameteri(linear_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(linear_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, band, shown.x, shown.y);
   glDisable(GL_DEPTH_TEST);
   upscale_.use();
   upscale_.set("u_frame", 0);
   bindTexture(0, target_.attachment(0));
-  setTextureParameter(target_.attachment(0), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  setTextureParameter(target_.attachment(0), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glBindSampler(0, linear_.id());
   glBindVertexArray(emptyVao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  setTextureParameter(target_.attachment(0), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  setTextureParameter(target_.attachment(0), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glBindSampler(0, 0);
   glEnable(GL_DEPTH_TEST);
 }
 

@@ -121,13 +121,30 @@ void bindTexture(GLuint unit, GLuint id) {
   glBindTexture(id ? textureTarget(id) : GL_TEXTURE_2D, id);
 }
 
+namespace {
+GLuint newFramebuffer() {
+  GLuint id = 0;
+  glGenFramebuffers(1, &id);
+  return id;
+}
+}  // namespace
+
+ReadFramebuffer::ReadFramebuffer(GLuint id, int layer, bool depth) : fbo_(newFramebuffer()), bound_(fbo_.id()) {
+  const GLenum target = textureTarget(id), attachment = depth ? GL_DEPTH_ATTACHMENT : GL_COLOR_ATTACHMENT0;
+  if (target == GL_TEXTURE_CUBE_MAP)
+    glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(layer), id, 0);
+  else if (target == GL_TEXTURE_2D_ARRAY)
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, attachment, id, 0, layer);
+  else
+    glFramebufferTexture(GL_FRAMEBUFFER, attachment, id, 0);
+  glDrawBuffer(GL_NONE);
+  glReadBuffer(depth ? GL_NONE : GL_COLOR_ATTACHMENT0);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw Error("texture " + std::to_string(id) + " cannot be read through a framebuffer");
+}
+
 void copyTexture2D(GLuint from, const int (&at)[2], GLuint into, const int (&to)[2], const int (&size)[2]) {
-  GLuint fbo = 0;
-  glGenFramebuffers(1, &fbo);
-  Framebuffer owner(fbo);
-  BoundFramebuffer source(fbo);  // (glCopyTexSubImage2D reads from the read framebuffer)
-  glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, from, 0);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  ReadFramebuffer source(from);  // (glCopyTexSubImage2D reads from the read framebuffer)
   BoundTexture edit(GL_TEXTURE_2D, into);
   glCopyTexSubImage2D(GL_TEXTURE_2D, 0, to[0], to[1], at[0], at[1], size[0], size[1]);
 }

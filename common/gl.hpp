@@ -99,6 +99,22 @@ class BoundVertexArray {
   GLint vertexArray_ = 0, arrayBuffer_ = 0;
 };
 
+/// A framebuffer of its own, bound for its scope, reading level 0 of texture `id` (made by
+/// makeTexture(); `layer` of a 2D array, or face of a cube map): colour attachment 0 as the read
+/// buffer, or the depth attachment with `depth`. glReadPixels and glCopyTexSubImage* read from it,
+/// where 4.1 has no glGetTextureSubImage or glCopyImageSubData. Throws wb::Error if it is incomplete.
+class ReadFramebuffer {
+ public:
+  /// Makes and binds the framebuffer; the old binding comes back when it goes out of scope.
+  explicit ReadFramebuffer(GLuint id, int layer = 0, bool depth = false);
+  ReadFramebuffer(const ReadFramebuffer&) = delete;
+  ReadFramebuffer& operator=(const ReadFramebuffer&) = delete;
+
+ private:
+  Framebuffer fbo_;
+  BoundFramebuffer bound_;  // (after fbo_: it puts the old binding back before fbo_ is deleted)
+};
+
 /// Creates a texture object of `target` (GL_TEXTURE_2D, GL_TEXTURE_2D_ARRAY, GL_TEXTURE_CUBE_MAP, ...),
 /// and remembers its target for bindTexture().
 Texture makeTexture(GLenum target);

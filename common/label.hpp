@@ -38,7 +38,7 @@ class Label {
   Program program_;
   VertexArray vao_;
   std::map<std::string, Mesh> meshes_;
-  std::unique_ptr<FontAtlas> font_;
+  std::shared_ptr<FontAtlas> font_;  // the process's one atlas (label.cpp)
   bool fontTried_ = false;
 };
 

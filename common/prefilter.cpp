@@ -102,13 +102,7 @@ void FilteredShadowMapArray::resize(int size, int layers, GLenum format) {
 
 void FilteredShadowMapArray::copy(int k) const {
   const FilteredShadowMap& m = layers_.at(size_t(k));
-  // (glCopyImageSubData is 4.3: the layer is read through a framebuffer, as copyTexture2D does.)
-  GLuint fbo = 0;
-  glGenFramebuffers(1, &fbo);
-  const Framebuffer owner(fbo);
-  BoundFramebuffer source(fbo);
-  glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, m.texture(), 0);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  ReadFramebuffer source(m.texture());  // (glCopyImageSubData is 4.3)
   BoundTexture edit(GL_TEXTURE_2D_ARRAY, array_.id());
   glCopyTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, k, 0, 0, size_, size_);
 }

@@ -67,23 +67,7 @@ void readTexture(GLuint id, int level, GLenum format, GLenum type, void* data) {
 }
 
 void readTextureRect(GLuint id, int x, int y, int layer, int w, int h, GLenum format, GLenum type, void* data) {
-  const GLenum target = textureTarget(id);
-  GLuint fbo = 0;
-  glGenFramebuffers(1, &fbo);
-  const Framebuffer owner(fbo);
-  BoundFramebuffer from(fbo);
-  const bool depth = format == GL_DEPTH_COMPONENT;
-  const GLenum attachment = depth ? GL_DEPTH_ATTACHMENT : GL_COLOR_ATTACHMENT0;
-  if (target == GL_TEXTURE_CUBE_MAP)
-    glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(layer), id, 0);
-  else if (target == GL_TEXTURE_2D_ARRAY)
-    glFramebufferTextureLayer(GL_FRAMEBUFFER, attachment, id, 0, layer);
-  else
-    glFramebufferTexture(GL_FRAMEBUFFER, attachment, id, 0);
-  glDrawBuffer(GL_NONE);
-  glReadBuffer(depth ? GL_NONE : GL_COLOR_ATTACHMENT0);
-  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-    throw Error("readTextureRect: texture " + std::to_string(id) + " cannot be read through a framebuffer");
+  ReadFramebuffer from(id, layer, format == GL_DEPTH_COMPONENT);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(x, y, w, h, format, type, data);
 }

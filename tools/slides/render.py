@@ -56,12 +56,15 @@ def tail(text: str, lines: int = 25) -> str:
     return "\n".join("    " + ln for ln in text.splitlines()[-lines:]) if text else "    (nothing)"
 
 
+def renderer(prefix: str, deck: Deck, build_dir: Path) -> list:
+    """The renderer's command line before its options: the prefix with {lab}, {name} and {build_dir}."""
+    return [w.replace("{lab}", deck.lab).replace("{name}", deck.name).replace("{build_dir}", str(build_dir))
+            for w in shlex.split(prefix)]
+
+
 def render_command(prefix: str, deck: Deck, build_dir: Path, step: int, png: Path, rec: Path, measure: bool) -> list:
-    words = []
-    for w in shlex.split(prefix):
-        words.append(w.replace("{lab}", deck.lab).replace("{name}", deck.name).replace("{build_dir}", str(build_dir)))
-    words += ["--headless", "--size", RENDER_SIZE, "--demo-step", str(step), "--screenshot", str(png),
-              "--record", str(rec), "--quiet"]
+    words = renderer(prefix, deck, build_dir) + ["--headless", "--size", RENDER_SIZE, "--demo-step", str(step),
+                                                 "--screenshot", str(png), "--record", str(rec), "--quiet"]
     if measure:  # the numbers, and what the frame costs, from the same build and the same render
         words += ["--metrics"]
         if not deck.steps[step - 1].get("compare"):  # (a split frame's cost is neither half's: below)
@@ -79,10 +82,9 @@ def bench_halves(deck: Deck, prefix: str, build_dir: Path, k: int, rec: Path, ti
         alone.pop("compare"), alone.pop("measure", None)
         path = rec.with_suffix(f".{side}.demo.json")
         path.write_text(json.dumps(dict(demo, steps=demo["steps"][: k - 1] + [alone] + demo["steps"][k:])), "utf-8")
-        words = [w.replace("{lab}", deck.lab).replace("{name}", deck.name).replace("{build_dir}", str(build_dir))
-                 for w in shlex.split(prefix)]
-        cmd = words + ["--headless", "--size", RENDER_SIZE, "--demo", str(path), "--demo-step", str(k), "--quiet",
-                       "--bench", str(rec.with_suffix(f".{side}.bench.csv")), "--frames", str(BENCH_FRAMES)]
+        cmd = renderer(prefix, deck, build_dir) + [
+            "--headless", "--size", RENDER_SIZE, "--demo", str(path), "--demo-step", str(k), "--quiet",
+            "--bench", str(rec.with_suffix(f".{side}.bench.csv")), "--frames", str(BENCH_FRAMES)]
         proc = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=timeout)
         if proc.returncode != 0:
             raise BuildError(f"lab {deck.lab} step {k}: timing the {side} half failed\n  command: "
@@ -189,10 +191,9 @@ def render_clips(deck: Deck, prefix: str, build_dir: Path, out: Path, timeout: f
     for k in sorted({u.step for u in deck.uses if u.kind == "clip"}):
         clip = deck.steps[k - 1]["clip"]
         webm = rdir / f"clip{k:02d}.webm"
-        words = [w.replace("{lab}", deck.lab).replace("{name}", deck.name).replace("{build_dir}", str(build_dir))
-                 for w in shlex.split(prefix)]
-        cmd = words + ["--headless", "--size", CLIP_SIZE, "--demo-step", str(k), "--quiet", "--record-video", str(webm),
-                       "--frames", str(int(clip.get("frames", 60))), "--animate", clip["animate"]]
+        cmd = renderer(prefix, deck, build_dir) + [
+            "--headless", "--size", CLIP_SIZE, "--demo-step", str(k), "--quiet", "--record-video", str(webm),
+            "--frames", str(int(clip.get("frames", 60))), "--animate", clip["animate"]]
         if clip.get("flips"):
             cmd.append("--show-flips")
         shown = " ".join(shlex.quote(c) for c in cmd)
