@@ -1,5 +1,5 @@
 # The glad 2 loader for OpenGL 4.1 core (+ EGL 1.5 where there is EGL), committed in third_party/glad
-# (tools/glad.sh makes it; ctest framework.glad_matches_generator checks it). Nothing is generated or
+# (tools/platforms/glad.sh makes it; ctest framework.glad_matches_generator checks it). Nothing is generated or
 # downloaded at build time, so Ubuntu 22.04 and vcpkg, whose glad is 0.1, build it as Debian does.
 set(WB_GLAD_DIR ${PROJECT_SOURCE_DIR}/third_party/glad)
 set(WB_GLAD_SOURCES ${WB_GLAD_DIR}/src/gl.c)

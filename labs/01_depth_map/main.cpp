@@ -5,7 +5,7 @@
 // Controls:   drag to orbit, wheel to zoom, 1-9 camera bookmarks, F12 screenshot.
 // Two passes: the light renders the scene's depth into a texture (the shadow map); the camera then
 // renders the scene and asks, per pixel, whether the light saw something nearer than this point.
-#include "common/lab.hpp"
+#include "common/shell/lab.hpp"
 #include "exercise.hpp"
 
 #include <glm/gtc/type_ptr.hpp>

@@ -1,8 +1,8 @@
 // Lab 02 C++ exercises: replace each throw with your code. Check your work with: ./workbook check 02
 #include "exercise.hpp"
 
-#include "common/error.hpp"
-#include "common/gl.hpp"
+#include "common/base/error.hpp"
+#include "common/platform/gl.hpp"
 
 #include <cmath>
 

@@ -7,7 +7,7 @@
 // Every remedy for shadow acne trades it for something else. This lab puts six of them on one scene
 // and measures both sides of the trade: acne (lit surfaces drawn shadowed) and the contact gap
 // (shadows detached from their casters, "peter-panning").
-#include "common/lab.hpp"
+#include "common/shell/lab.hpp"
 #include "exercise.hpp"
 
 #include <cmath>

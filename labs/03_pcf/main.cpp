@@ -6,7 +6,7 @@
 // A shadow map answers "lit or not" per texel, so its edges are as blocky as its texels. PCF
 // averages the answers of several nearby texels: the edge becomes a ramp whose width is the filter
 // footprint. The kernels here trade banding, noise and fetches; --sweep times them.
-#include "common/lab.hpp"
+#include "common/shell/lab.hpp"
 
 #include <string>
 

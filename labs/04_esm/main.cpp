@@ -7,7 +7,7 @@
 // stores exp(c z), which a blur, mipmaps and the hardware's bilinear filter may average, and one
 // lookup then gives a soft answer. The price: leaks near contacts, and an exponent bounded by the
 // float format.
-#include "common/lab.hpp"
+#include "common/shell/lab.hpp"
 #include "exercise.hpp"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 // Lab 05 C++ exercise: replace the throw with your code. Check your work with: ./workbook check 05
 #include "exercise.hpp"
 
-#include "common/error.hpp"
+#include "common/base/error.hpp"
 
 namespace lab05 {
 

@@ -6,9 +6,9 @@
 // VSM stores the mean and mean square of depth, which filter linearly, and bounds the lit fraction
 // with Chebyshev's inequality. The bound is exact for one occluder over one receiver and too
 // generous for stacked occluders: light bleeds. The Experiments panel measures both facts.
-#include "common/glsl_harness.hpp"
-#include "common/lab.hpp"
-#include "common/texture_io.hpp"
+#include "common/exercise/glsl_harness.hpp"
+#include "common/platform/texture_io.hpp"
+#include "common/shell/lab.hpp"
 #include "exercise.hpp"
 
 #include <imgui.h>

@@ -7,7 +7,7 @@
 // depth exponentially before taking moments squeezes that ratio, and a second, negative warp
 // catches what the first misses; the smaller of the two bounds is kept. The extension (06.x) stores
 // four powers of depth instead and reconstructs the shadow from them (moment shadow maps).
-#include "common/lab.hpp"
+#include "common/shell/lab.hpp"
 #include "exercise.hpp"
 
 #include <algorithm>

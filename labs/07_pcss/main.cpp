@@ -7,7 +7,7 @@
 // further away. PCSS estimates that width per pixel from the shadow map: it searches for blockers,
 // averages their depth, and filters with a PCF as wide as the penumbra the parallel-planes model
 // predicts. --metrics holds it against the area light's true visibility, ray-traced.
-#include "common/lab.hpp"
+#include "common/shell/lab.hpp"
 
 #include <cmath>
 #include <string>

@@ -7,7 +7,7 @@
 // A point light shines every way, so one perspective map cannot hold its shadows: six can, one per
 // face of a cube around the light. Each face is a 90° square frustum with its own up vector; the
 // map stores the distance to the light, and the lookup needs no matrix at all, only the direction.
-#include "common/lab.hpp"
+#include "common/shell/lab.hpp"
 #include "exercise.hpp"
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 // delete. Check your work with: ./workbook check 09
 #include "exercise.hpp"
 
-#include "common/error.hpp"
+#include "common/base/error.hpp"
 
 #include <glad/gl.h>
 

@@ -6,8 +6,8 @@
 // No map at all: every caster's silhouette, as the light sees it, is pushed to infinity, and the
 // stencil buffer counts, per pixel, how many of those volumes the pixel lies in. Zero means lit.
 // The shadows are exact to the pixel; the price is fill rate and a pass over the geometry.
-#include "common/ground_truth.hpp"
-#include "common/lab.hpp"
+#include "common/shell/lab.hpp"
+#include "common/truth/ground_truth.hpp"
 #include "exercise.hpp"
 
 #include <array>

@@ -6,8 +6,8 @@
 // One map over a 200 m field spends its texels evenly, so the bench at your feet gets as few as the
 // trees on the horizon. Cascades cut the view into slices, near ones short and far ones long, and give
 // each slice a map of its own: resolution where the camera needs it.
-#include "common/lab.hpp"
-#include "common/prefilter.hpp"
+#include "common/shadows/prefilter.hpp"
+#include "common/shell/lab.hpp"
 #include "exercise.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -1,7 +1,7 @@
 // Lab 02 C++ exercises: reference solution.
 #include "exercise.hpp"
 
-#include "common/gl.hpp"
+#include "common/platform/gl.hpp"
 
 #include <algorithm>
 #include <cmath>

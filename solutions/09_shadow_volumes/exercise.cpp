@@ -1,7 +1,7 @@
 // Lab 09 C++ exercises: reference solution.
 #include "exercise.hpp"
 
-#include "common/error.hpp"
+#include "common/base/error.hpp"
 
 #include <glad/gl.h>
 

@@ -1,7 +1,7 @@
 // Lab 10 C++ exercises: reference solution.
 #include "exercise.hpp"
 
-#include "common/error.hpp"
+#include "common/base/error.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -1,7 +1,7 @@
 // Lab 02 tests. Layer 1: each remedy's formula against a double-precision reference or GL state;
 // layer 2: the three bias scenes against golden visibility (./workbook golden 02).
-#include "common/gl.hpp"
-#include "common/variant.hpp"
+#include "common/base/variant.hpp"
+#include "common/platform/gl.hpp"
 #include "exercise.hpp"
 #include "tests/harness/harness.hpp"
 

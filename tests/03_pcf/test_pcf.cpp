@@ -1,9 +1,9 @@
 // Lab 03 tests. Layer 1: every filter against a double-precision emulation of the same taps on a
 // 16x16 depth map (nearest-texel lookups, depth 1 outside the map); layer 2: the canonical scene
 // against golden visibility (./workbook golden 03).
-#include "common/gl.hpp"
-#include "common/texture_io.hpp"
-#include "common/variant.hpp"
+#include "common/base/variant.hpp"
+#include "common/platform/gl.hpp"
+#include "common/platform/texture_io.hpp"
 #include "tests/harness/harness.hpp"
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // Lab 04 tests. Layer 1: each ESM step against a double-precision reference; layer 2: the canonical
 // scene against golden visibility (./workbook golden 04).
-#include "common/variant.hpp"
+#include "common/base/variant.hpp"
 #include "exercise.hpp"
 #include "tests/harness/harness.hpp"
 

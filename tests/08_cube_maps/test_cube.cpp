@@ -3,12 +3,12 @@
 // distance write against |p - light| / far, and the lookups against a double-precision emulation of
 // GL's cube-map face selection on a synthetic 8x8 cube; layer 2: the lantern room against golden
 // visibility (./workbook golden 08).
-#include "common/gl.hpp"
-#include "common/scene.hpp"
-#include "common/shader.hpp"
-#include "common/shadow_map.hpp"
-#include "common/texture_io.hpp"
-#include "common/variant.hpp"
+#include "common/base/variant.hpp"
+#include "common/platform/gl.hpp"
+#include "common/platform/shader.hpp"
+#include "common/platform/texture_io.hpp"
+#include "common/scene/scene.hpp"
+#include "common/shadows/shadow_map.hpp"
 #include "exercise.hpp"
 #include "tests/harness/harness.hpp"
 #include "tests/harness/tape.hpp"

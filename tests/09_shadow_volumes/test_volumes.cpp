@@ -3,7 +3,7 @@
 // other way round); the silhouette test and the extrusion on synthetic triangles; the stencil
 // operations; the near-plane test against boxes placed by hand. Layer 2: the casters against golden
 // visibility, z-pass and z-fail, the camera inside a volume, and exactness against ray casting.
-#include "common/mesh.hpp"
+#include "common/scene/mesh.hpp"
 #include "exercise.hpp"
 #include "tests/harness/harness.hpp"
 

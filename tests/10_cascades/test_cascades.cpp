@@ -1,7 +1,7 @@
 // Lab 10 tests. Layer 1: the split formulas against values worked out by hand (lambda 0, 0.5 and 1),
 // slice corners of known frusta, the crop matrix mapping the corners onto [-1, 1], texel snapping,
 // selection at the split boundaries and blend weights at the band's edges.
-#include "common/image.hpp"
+#include "common/platform/image.hpp"
 #include "exercise.hpp"
 #include "tests/harness/harness.hpp"
 

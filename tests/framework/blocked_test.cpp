@@ -2,9 +2,9 @@
 // lab's runs for every other exercise then fail as "blocked by" it, and only it shows the error.
 // This build has no solution (like the student edition), so nothing isolates the chunks: lab 01's
 // stub file is broken in 01.4's chunk and handed to the lab through WB_SHADER_OVERLAY.
-#include "common/glsl_harness.hpp"
-#include "common/shader.hpp"
-#include "common/variant.hpp"
+#include "common/base/variant.hpp"
+#include "common/exercise/glsl_harness.hpp"
+#include "common/platform/shader.hpp"
 #include "tests/harness/harness.hpp"
 
 #include <gtest/gtest.h>

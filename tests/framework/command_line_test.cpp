@@ -1,7 +1,7 @@
 // The lab command line is one table: the usage text lists every option the parser accepts, and the
 // parser's errors name the option and what it wants.
-#include "common/command_line.hpp"
-#include "common/error.hpp"
+#include "common/shell/command_line.hpp"
+#include "common/base/error.hpp"
 
 #include <gtest/gtest.h>
 

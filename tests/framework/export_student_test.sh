@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ./workbook export-student (tools/export_student.sh), in a scratch copy of the repository with work
+# ./workbook export-student (tools/grading/export_student.sh), in a scratch copy of the repository with work
 # in progress lying around: the export is the committed tree (an uncommitted edit and an untracked
 # file stay out), it holds no instructor file (the grader, its tests, the instructor docs), its README
 # is the students' one and offers no --solution, grade, golden or bundle command, and its ./workbook
@@ -19,14 +19,14 @@ echo "WORK IN PROGRESS" >>"$tmp/repo/labs/01_depth_map/README.md"
 echo "draft" >"$tmp/repo/labs/01_depth_map/draft-notes.md"
 
 student="$tmp/student"
-if ! "$tmp/repo/tools/export_student.sh" "$student" >"$tmp/export.out" 2>&1; then
+if ! "$tmp/repo/tools/grading/export_student.sh" "$student" >"$tmp/export.out" 2>&1; then
   fail "the export failed: $(cat "$tmp/export.out")"
 fi
 grep -q "not exported" "$tmp/export.out" || fail "the export does not say that uncommitted work is left out"
 ! grep -q "WORK IN PROGRESS" "$student/labs/01_depth_map/README.md" || fail "an uncommitted edit was exported"
 [ ! -e "$student/labs/01_depth_map/draft-notes.md" ] || fail "an untracked file was exported"
 for path in solutions tests/mutants tests/hidden tests/grading docs/instructors.md docs/gradescope.md \
-            tools/grade.py tools/gradescope tools/make_submissions.py tools/export_student.sh tools/student_README.md; do
+            tools/grading/grade.py tools/grading/gradescope tools/grading/make_submissions.py tools/grading/export_student.sh tools/grading/student_README.md; do
   [ ! -e "$student/$path" ] || fail "the student edition has $path"
 done
 for path in workbook labs/01_depth_map/exercise.cpp tests/framework docs/adding-a-lab.md; do

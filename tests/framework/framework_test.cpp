@@ -1,18 +1,19 @@
 // The framework's promises to students and lecturers: bad input gets a clear message and the right
 // exit code, never a crash; compiler errors name the original file and line; a broken shader edit
 // keeps the last good program.
-#include "common/crash_report.hpp"
-#include "common/exercise_board.hpp"
-#include "common/exercise_chunks.hpp"
-#include "common/exercise_tape.hpp"
-#include "common/ground_truth.hpp"
-#include "common/prefilter.hpp"
-#include "common/run_record.hpp"
-#include "common/scene.hpp"
-#include "common/settings.hpp"
-#include "common/shader.hpp"
-#include "common/texture_io.hpp"
-#include "common/variant.hpp"
+#include "common/base/settings.hpp"
+#include "common/base/variant.hpp"
+#include "common/exercise/crash_report.hpp"
+#include "common/exercise/exercise_board.hpp"
+#include "common/exercise/exercise_chunks.hpp"
+#include "common/exercise/exercise_source_rules.hpp"
+#include "common/exercise/exercise_tape.hpp"
+#include "common/exercise/run_record.hpp"
+#include "common/platform/shader.hpp"
+#include "common/platform/texture_io.hpp"
+#include "common/scene/scene.hpp"
+#include "common/shadows/prefilter.hpp"
+#include "common/truth/ground_truth.hpp"
 #include "tests/harness/harness.hpp"
 
 #include <sys/wait.h>
@@ -169,7 +170,7 @@ TEST_F(GlTest, HotReloadKeepsTheLastGoodProgram) {
 
 // An edit that breaks one exercise's chunk keeps that chunk's last good text and the other
 // exercises' current ones: a student who improves 99.1 and breaks 99.2 in one save sees the new
-// 99.1, and the panel says what is drawn (common/exercise_chunks.hpp).
+// 99.1, and the panel says what is drawn (common/exercise/exercise_chunks.hpp).
 namespace {
 // Draws `p` (a full-screen triangle whose fragment shader writes (v0, v1, 0, 1)) into one texel,
 // and returns v0 and v1.
@@ -205,7 +206,8 @@ TEST_F(GlTest, HotReloadKeepsTheBrokenExercisesLastGoodChunk) {
             "// EXERCISE 99.2\nfloat second() { return -1e30; } // WB_TODO\n");
   setenv("WB_SHADER_OVERLAY", dir.c_str(), 1);
   wb::Program p =
-      wb::Program::tryLoad({{GL_VERTEX_SHADER, "wb/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "chunks_test.frag"}});
+      wb::Program::tryLoad({{GL_VERTEX_SHADER, "wb/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "chunks_test.frag"}}, {},
+                           &wb::exerciseSourceRules());
   ASSERT_TRUE(p.ok()) << p.error();
   EXPECT_EQ(runTwoValues(p), std::make_pair(1.0f, -1e30f));
   // 99.1 improved, 99.2 broken (line 5), in one save.
@@ -621,7 +623,7 @@ TEST_F(GlTest, PrefilterBlurMatchesTheSameFilterOnTheCpu) {
 }
 
 // The grader re-grades a C++ exercise alone when a failure came from a test that runs the lab's app
-// (tools/grade.py, runs_app): it finds those tests by name, so every test that runs the app must
+// (tools/grading/grade.py, runs_app): it finds those tests by name, so every test that runs the app must
 // have Scene or Measured in its name.
 TEST(Grading, TestsThatRunTheAppSaySceneOrMeasured) {
   const std::regex test(R"(^TEST(_F)?\(\s*\w+\s*,\s*(\w+)\s*\))");

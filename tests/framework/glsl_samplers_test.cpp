@@ -1,9 +1,9 @@
 // The GLSL kernel harness declares each wb_texN with the sampler type of its texture: 2D, cube map
 // and 2D array, each plain or with a depth comparison. Every type reads tiny textures of known
 // texels, and each answer below is worked out by hand.
-#include "common/error.hpp"
-#include "common/glsl_harness.hpp"
-#include "common/texture_io.hpp"
+#include "common/base/error.hpp"
+#include "common/exercise/glsl_harness.hpp"
+#include "common/platform/texture_io.hpp"
 #include "tests/harness/harness.hpp"
 
 #include <string>

@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """The known mistakes that `check` names (tests/hints/NN_name.json, recorded from the mutants by
-tools/make_hints.py) are in the handouts and belong to mutants that exist: usage hints_test.py
+tools/authoring/make_hints.py) are in the handouts and belong to mutants that exist: usage hints_test.py
 BUILD_DIR. Whether check names each mutant's own mistake, and never another's, is each mutant's
 ctest test (mutant.labNN.NAME runs its exercise with --expect-mistake and --expect-hint, cmake/Lab.cmake):
-a stale hint fails there (run tools/make_hints.py BUILD_DIR)."""
+a stale hint fails there (run tools/authoring/make_hints.py BUILD_DIR)."""
 import json
 import sys
 from pathlib import Path
@@ -18,10 +18,10 @@ for hints_file in sorted((ROOT / "tests/hints").glob("*.json")):
         checked += 1
         if not (ROOT / "tests/mutants" / lab / f"{h['mutant']}.mutant").is_file():
             problems.append(f"{hints_file.name}: a hint of mutant {h['mutant']}, which tests/mutants/{lab} no longer has "
-                            f"(run tools/make_hints.py {sys.argv[1] if len(sys.argv) > 1 else 'BUILD_DIR'})")
+                            f"(run tools/authoring/make_hints.py {sys.argv[1] if len(sys.argv) > 1 else 'BUILD_DIR'})")
         if h["hint"] not in readme:
             problems.append(f"labs/{lab}/README.md: its Common mistakes section lacks '{h['hint']}' (run "
-                            "tools/make_hints.py BUILD_DIR)")
+                            "tools/authoring/make_hints.py BUILD_DIR)")
 for p in problems:
     print("FAIL:", p)
 print(f"{checked} recorded hints: " + ("each in its handout, each of a mutant" if not problems else f"{len(problems)} problems"))

@@ -1,8 +1,9 @@
-// What a student's GLSL may include (common/include_policy.hpp): a red-team submission once
+// What a student's GLSL may include (common/exercise/include_policy.hpp): a red-team submission once
 // included the reference's exercise.glsl through the judge's shader path and scored full marks.
-#include "common/error.hpp"
-#include "common/shader.hpp"
-#include "common/variant.hpp"
+#include "common/base/error.hpp"
+#include "common/base/variant.hpp"
+#include "common/exercise/exercise_source_rules.hpp"
+#include "common/platform/shader.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -25,7 +26,7 @@ fs::path scratchDir(const std::string& name) {
 // The error preprocessing `text` as the exercise file `origin` gives ("" when it expands).
 std::string includeError(const std::string& text, const fs::path& origin, const std::vector<fs::path>& path) {
   try {
-    wb::preprocessShader(text, origin, "", path);
+    wb::preprocessShader(text, origin, "", path, {}, &wb::exerciseSourceRules());
     return "";
   } catch (const wb::Error& e) {
     return e.what();
@@ -83,8 +84,8 @@ TEST(IncludePolicy, AnAllowedIncludeIsThePublicOne) {
   const fs::path dir = scratchDir("include_policy_decoy");
   fs::create_directories(dir / "wb");
   std::ofstream(dir / "wb/exercise.glsl") << "float decoy() { return 1.0; }\n";
-  const wb::ShaderSource src =
-      wb::preprocessShader("#version 410 core\n#include \"wb/exercise.glsl\"\n", dir / "exercise.glsl", "", {dir});
+  const wb::ShaderSource src = wb::preprocessShader("#version 410 core\n#include \"wb/exercise.glsl\"\n",
+                                                    dir / "exercise.glsl", "", {dir}, {}, &wb::exerciseSourceRules());
   ASSERT_GE(src.files.size(), 2u);
   EXPECT_EQ(src.files[1], fs::path(wb::variant::kSourceDir) / "shaders/wb/exercise.glsl");
   EXPECT_EQ(src.text.find("decoy"), std::string::npos);
@@ -94,6 +95,7 @@ TEST(IncludePolicy, AnAllowedIncludeIsThePublicOne) {
 TEST(IncludePolicy, OtherFilesIncludeFreely) {
   const fs::path dir = scratchDir("include_policy_other");
   std::ofstream(dir / "helper.glsl") << "float helper() { return 1.0; }\n";
-  const wb::ShaderSource src = wb::preprocessShader("#include \"helper.glsl\"\n", dir / "depth.frag", "", {});
+  const wb::ShaderSource src =
+      wb::preprocessShader("#include \"helper.glsl\"\n", dir / "depth.frag", "", {}, {}, &wb::exerciseSourceRules());
   EXPECT_NE(src.text.find("helper()"), std::string::npos);
 }

@@ -1,7 +1,7 @@
 // The window's exercise verdicts are those of the running code: the checks do not run from a test
 // binary older than the C++ exercise file (it may hold older code), and an exercise.cpp edited after
 // the running app was built is noted (the verdicts are the running build's, not the edit's).
-#include "common/live_checks.hpp"
+#include "common/exercise/live_checks.hpp"
 #include "tests/harness/harness.hpp"
 
 #include <gtest/gtest.h>

@@ -1,10 +1,10 @@
-// Presenter steps (common/presenter.hpp): a malformed demo.json is named with its step and what is
+// Presenter steps (common/shell/presenter.hpp): a malformed demo.json is named with its step and what is
 // wrong, steps do not accumulate (paging back shows what paging forward showed), a step that does
 // not exist is a usage error, and the showcase's settings follow its technique at once.
-#include "common/presenter.hpp"
-#include "common/error.hpp"
-#include "common/settings.hpp"
-#include "common/variant.hpp"
+#include "common/shell/presenter.hpp"
+#include "common/base/error.hpp"
+#include "common/base/settings.hpp"
+#include "common/base/variant.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,13 +1,13 @@
 // Shadow maps of every shape render a known scene, the debug views show them the right way up, and
 // the frame target counts in its stencil. Every expected value is worked out by hand in a comment.
-#include "common/debug_views.hpp"
-#include "common/frame_target.hpp"
-#include "common/measurement.hpp"
-#include "common/scene.hpp"
-#include "common/shader.hpp"
-#include "common/shadow_map.hpp"
-#include "common/texture_io.hpp"
-#include "common/variant.hpp"
+#include "common/base/variant.hpp"
+#include "common/platform/frame_target.hpp"
+#include "common/platform/shader.hpp"
+#include "common/platform/texture_io.hpp"
+#include "common/scene/scene.hpp"
+#include "common/shadows/shadow_map.hpp"
+#include "common/shell/debug_views.hpp"
+#include "common/truth/measurement.hpp"
 #include "tests/harness/harness.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -179,9 +179,8 @@ TEST_F(GlTest, MeasurementsOfOneShapeAreSkippedForOthers) {
   target.resize({16, 16});
   target.clear();
   const wb::LightView light = cube.describe(scene.lights[0], faceMatrices({0, 2, 0}, 0.5f, 10), true);
-  const wb::CompareChoice none;
   wb::Measurement measurement;
-  const wb::MeasureResult r = measurement.measure({target, scene, 0.5f, light, scene.lights[0], none, nullptr, 64});
+  const wb::MeasureResult r = measurement.measure({target, scene, 0.5f, light, scene.lights[0], {}, nullptr, 64});
   EXPECT_EQ(r.gapTexels, -1);
   EXPECT_EQ(r.reference.pixels, 0);
   EXPECT_NE(r.notes.find("cube map"), std::string::npos) << r.notes;

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The sweep's timing method (common/bench.cpp) repeats itself: one setting measured twice in one run,
+"""The sweep's timing method (common/shell/bench.cpp) repeats itself: one setting measured twice in one run,
 in interleaved rounds, gives two medians that agree within their spreads, and the passes of a row fit
 inside the frame they were timed in.
 usage: sweep_repeats_test.py LAB_EXE OUT_DIR"""

@@ -1,7 +1,7 @@
 // Grading-time variations: the same seed turns a scene the same way every time, by a little (lights
 // 1 to 3 degrees, cameras up to 3 degrees), and another seed turns it another way.
-#include "common/scene.hpp"
-#include "common/variant.hpp"
+#include "common/base/variant.hpp"
+#include "common/scene/scene.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# ./workbook golden NN runs the solution's scene tests with --update-golden (update_golden in the
-# workbook). Held here with fake test binaries that print what gtest prints: when a test fails, its
-# messages are shown (not those of the tests that passed) and the exit code is not 0; when all pass,
-# the updated files are listed and the exit code is 0. Usage: workbook_golden_test.sh SCRATCH_DIR
+# ./workbook golden NN runs the solution's scene tests with --update-golden
+# (tools/authoring/update_golden.sh). Held here with fake test binaries that print what gtest
+# prints: when a test fails, its messages are shown (not those of the tests that passed) and the exit
+# code is not 0; when all pass, the updated files are listed and the exit code is 0.
+# Usage: workbook_golden_test.sh SCRATCH_DIR
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 tmp=${1:?usage: workbook_golden_test.sh SCRATCH_DIR}
@@ -39,7 +40,7 @@ chmod +x "$tmp/failing_tests" "$tmp/passing_tests"
 
 run() {  # BINARY: update_golden's output (stdout and stderr) in $out, its exit code in $code
   code=0
-  out=$(source "$root/workbook" && update_golden "$1" "$tmp/golden.log" 2>&1) || code=$?
+  out=$("$root/tools/authoring/update_golden.sh" "$1" "$tmp/golden.log" 2>&1) || code=$?
 }
 
 run "$tmp/failing_tests"

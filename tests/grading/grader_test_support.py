@@ -1,4 +1,4 @@
-"""What the grader's Python tests share: tools/grade.py loaded as a module (without writing
+"""What the grader's Python tests share: tools/grading/grade.py loaded as a module (without writing
 __pycache__ into tools/), and a list of problems that ends the test with one line."""
 import importlib.util
 import sys
@@ -6,7 +6,7 @@ from pathlib import Path
 
 sys.dont_write_bytecode = True  # no __pycache__ in tools/
 ROOT = Path(__file__).resolve().parent.parent.parent
-_spec = importlib.util.spec_from_file_location("grade", ROOT / "tools/grade.py")
+_spec = importlib.util.spec_from_file_location("grade", ROOT / "tools/grading/grade.py")
 grade = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(grade)
 

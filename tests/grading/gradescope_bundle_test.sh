@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ./workbook gradescope-bundle (tools/gradescope/bundle.sh), in a scratch copy of the repository:
+# ./workbook gradescope-bundle (tools/grading/gradescope/bundle.sh), in a scratch copy of the repository:
 # the zip holds the tracked files only (run twice, with an earlier zip, an untracked zip, a
 # __pycache__ and a build folder lying around, none of them goes in), laid out as Gradescope unpacks
 # it (setup.sh and run_autograder beside the workbook, executable); --labs 03 (or 03,04) makes an
@@ -19,7 +19,7 @@ mkdir -p "$tmp/repo/tools/__pycache__" "$tmp/repo/build-x"
 echo junk >"$tmp/repo/tools/__pycache__/grade.cpython-311.pyc"
 echo junk >"$tmp/repo/build-x/CMakeCache.txt"
 echo junk >"$tmp/repo/old-autograder.zip"
-bundle="$tmp/repo/tools/gradescope/bundle.sh"
+bundle="$tmp/repo/tools/grading/gradescope/bundle.sh"
 
 zip="$tmp/repo/autograder.zip"  # inside the repository, so a second run could pick the first up
 "$bundle" "$zip" --labs 03 >"$tmp/first.out" 2>&1 || fail "the first bundle failed: $(cat "$tmp/first.out")"
@@ -32,7 +32,7 @@ names = set(z.namelist())
 mode = {i.filename: i.external_attr >> 16 for i in z.infolist()}
 tracked = set(subprocess.run(["git", "-C", sys.argv[2], "ls-files"], capture_output=True, text=True).stdout.split())
 bad = []
-need = ["setup.sh", "run_autograder", "gradescope-labs", "workbook", "tools/grade.py", "CMakeLists.txt"]
+need = ["setup.sh", "run_autograder", "gradescope-labs", "workbook", "tools/grading/grade.py", "CMakeLists.txt"]
 bad += [f"lacks {n}" for n in need if n not in names]
 bad += [f"{n} is not executable" for n in ("setup.sh", "run_autograder", "workbook") if n in mode and not mode[n] & 0o111]
 bad += ["has no solutions/"] * (not any(n.startswith("solutions/") for n in names))
@@ -50,12 +50,12 @@ PY
 mkdir -p "$tmp/ag/source" "$tmp/ag/submission"
 (cd "$tmp/ag/source" && /usr/bin/python3 -m zipfile -e "$zip" .)
 chmod +x "$tmp/ag/source/run_autograder"
-cat >"$tmp/ag/source/tools/grade.py" <<'EOF'
+cat >"$tmp/ag/source/tools/grading/grade.py" <<'EOF'
 import sys
 open(sys.argv[0] + ".args", "w").write(" ".join(sys.argv[1:]))
 EOF
 WB_AUTOGRADER="$tmp/ag" "$tmp/ag/source/run_autograder" >"$tmp/run.out" 2>&1 || fail "run_autograder failed: $(cat "$tmp/run.out")"
-args=$(cat "$tmp/ag/source/tools/grade.py.args" 2>/dev/null || true)
+args=$(cat "$tmp/ag/source/tools/grading/grade.py.args" 2>/dev/null || true)
 [[ " $args " == *" --labs 03 "* ]] || fail "run_autograder runs the grader with '$args', without --labs 03"
 [[ " $args " == *" --out $tmp/ag/results "* ]] || fail "run_autograder does not write to results/: '$args'"
 
@@ -85,7 +85,7 @@ grep -q "no lab 42" "$tmp/none.out" || fail "--labs 42 does not say there is no 
 # Outside a git checkout the bundle refuses (it could not tell tracked files from the rest).
 mkdir -p "$tmp/nogit"
 (cd "$tmp/repo" && tar --exclude=.git -cf - .) | tar -xf - -C "$tmp/nogit"
-if "$tmp/nogit/tools/gradescope/bundle.sh" "$tmp/nogit.zip" >"$tmp/nogit.out" 2>&1; then
+if "$tmp/nogit/tools/grading/gradescope/bundle.sh" "$tmp/nogit.zip" >"$tmp/nogit.out" 2>&1; then
   fail "the bundle was made outside a git checkout"
 fi
 grep -q "not a git checkout" "$tmp/nogit.out" || fail "outside git, the message is: $(cat "$tmp/nogit.out")"

@@ -1,6 +1,6 @@
 #include "tests/harness/diagnosis.hpp"
 
-#include "common/variant.hpp"
+#include "common/base/variant.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -2,7 +2,7 @@
 /// What `./workbook check` says about a failed test, in words a student can act on: the verdict,
 /// the compiler's own file:line for a compile error, the failing case's got and want with the
 /// tolerance, the diff image, and a hint when the wrong value is one a known mistake gives (the
-/// mutants of tests/mutants, recorded as values in tests/hints/NN_name.json by tools/make_hints.py).
+/// mutants of tests/mutants, recorded as values in tests/hints/NN_name.json by tools/authoring/make_hints.py).
 #pragma once
 #include <optional>
 #include <string>

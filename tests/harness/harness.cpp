@@ -1,11 +1,11 @@
 #include "tests/harness/harness.hpp"
 
-#include "common/context.hpp"
-#include "common/exercise_tape.hpp"
-#include "common/glsl_harness.hpp"
-#include "common/run_record.hpp"
-#include "common/shader.hpp"
-#include "common/variant.hpp"
+#include "common/base/variant.hpp"
+#include "common/exercise/exercise_tape.hpp"
+#include "common/exercise/glsl_harness.hpp"
+#include "common/exercise/run_record.hpp"
+#include "common/platform/context.hpp"
+#include "common/platform/shader.hpp"
 #include "tests/harness/reference_calls.hpp"
 #include "tests/harness/tape.hpp"
 
@@ -417,7 +417,7 @@ static ::testing::AssertionResult runIsolated(const std::string& id, const fs::p
           (l.find(": error") != std::string::npos || l.rfind("crashed (", 0) == 0 || l.rfind("timed out (", 0) == 0))
         cause = l;
     }
-    // A crash in another exercise's code (common/crash_report.cpp names it) blocks this one: it could
+    // A crash in another exercise's code (common/exercise/crash_report.cpp names it) blocks this one: it could
     // not be drawn, and says nothing about this exercise.
     const auto other = cause.find(" in exercise ");
     if ((code > 128 || code == 124) && other != std::string::npos &&

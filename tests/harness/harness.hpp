@@ -2,8 +2,8 @@
 /// What every lab's tests use. Failure messages start with one of three words that `check` and the
 /// grader classify: "NOT IMPLEMENTED" (a stub), "WRONG" (a bad answer), "ERROR" (it did not run).
 #pragma once
-#include "common/error.hpp"
-#include "common/image.hpp"
+#include "common/base/error.hpp"
+#include "common/platform/image.hpp"
 #include "tests/harness/tape.hpp"
 
 #include <gtest/gtest.h>

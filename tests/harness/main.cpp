@@ -8,15 +8,15 @@
 //   --requests F     with --runner: record only the lab runs F asks for (held-out tests; see
 //                    recordRequestedRuns in harness.hpp)
 //   --signatures F   like --check, and write each failing test's value to F (JSON lines), from
-//                    which tools/make_hints.py records the values the mutants' mistakes give
+//                    which tools/authoring/make_hints.py records the values the mutants' mistakes give
 //   --as-student-edition  run as the student edition does, without the solution's app and shaders
 //                    (tests of check's verdicts there: tests/framework/CMakeLists.txt)
 //   --judge DIR      replay the tape in DIR instead of running any exercise, and decide
 //                    (see tape.hpp: the grader runs the student's build as the runner and the
 //                    solution's as the judge; `./workbook check` runs both the same way)
-#include "common/crash_report.hpp"
-#include "common/glsl_harness.hpp"
-#include "common/variant.hpp"
+#include "common/base/variant.hpp"
+#include "common/exercise/crash_report.hpp"
+#include "common/exercise/glsl_harness.hpp"
 #include "tests/harness/diagnosis.hpp"
 #include "tests/harness/harness.hpp"
 
@@ -185,7 +185,7 @@ class CheckListener : public ::testing::EmptyTestEventListener {
     const std::string hint = hintRight       ? (hints.empty() ? "none (none expected)" : "right")
                              : hints.empty() ? "MISSING: " + expectHint
                                              : "WRONG: " + (other != hints.end() ? *other : hints[0]);
-    // Attribution, where other exercises' tests ran too (the whole lab, tools/mutant_matrix.py
+    // Attribution, where other exercises' tests ran too (the whole lab, tools/authoring/mutant_matrix.py
     // --whole-lab): no other exercise may be marked wrong; "blocked by" (an ERROR) is allowed.
     std::string blamed;
     for (const auto& [id, diagnosis] : first_)
@@ -196,7 +196,7 @@ class CheckListener : public ::testing::EmptyTestEventListener {
   }
 
   bool expectStubs_;
-  std::string signatures_;  // --signatures F: each failing test's value, for tools/make_hints.py
+  std::string signatures_;  // --signatures F: each failing test's value, for tools/authoring/make_hints.py
   std::set<std::string> signed_;
   std::set<std::string> ran_;  // the exercises that had a test run
   std::string current_;        // the exercise of the running test

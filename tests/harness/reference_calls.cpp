@@ -1,8 +1,8 @@
 #include "tests/harness/reference_calls.hpp"
 
-#include "common/exercise_tape.hpp"
-#include "common/shader.hpp"
-#include "common/variant.hpp"
+#include "common/base/variant.hpp"
+#include "common/exercise/exercise_tape.hpp"
+#include "common/platform/shader.hpp"
 
 #include <gtest/gtest.h>
 

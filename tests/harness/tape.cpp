@@ -1,8 +1,8 @@
 #include "tests/harness/tape.hpp"
 
-#include "common/exercise_tape.hpp"
+#include "common/exercise/exercise_tape.hpp"
 
-#include "common/shader.hpp"
+#include "common/platform/shader.hpp"
 
 #include <gtest/gtest.h>
 

@@ -7,8 +7,8 @@
 /// Nothing a runner prints, exits with or writes besides the tape's values can claim a pass. Without
 /// either option a test binary observes directly (the ordinary tests and CI).
 #pragma once
-#include "common/error.hpp"
-#include "common/value_codec.hpp"
+#include "common/base/error.hpp"
+#include "common/base/value_codec.hpp"
 
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>

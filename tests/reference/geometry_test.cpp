@@ -3,12 +3,12 @@
 // welded positions beside its per-face vertices, closed shapes weld to closed, consistently oriented
 // manifolds, and a GL_TRIANGLES_ADJACENCY buffer built from the welded data reaches a geometry shader
 // through GpuScene, with depth clamp on request.
-#include "common/error.hpp"
-#include "common/mesh.hpp"
-#include "common/scene.hpp"
-#include "common/shader.hpp"
-#include "common/texture_io.hpp"
-#include "common/variant.hpp"
+#include "common/base/error.hpp"
+#include "common/base/variant.hpp"
+#include "common/platform/shader.hpp"
+#include "common/platform/texture_io.hpp"
+#include "common/scene/mesh.hpp"
+#include "common/scene/scene.hpp"
 #include "tests/harness/harness.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -1,4 +1,4 @@
-"""Exercise chunks (as in common/glsl_harness.cpp): finding an exercise's marked chunk, grading a
+"""Exercise chunks (as in common/exercise/glsl_harness.cpp): finding an exercise's marked chunk, grading a
 chunk alone in the stub's file, and what a failed build says about an exercise."""
 import re
 import shutil
@@ -33,7 +33,7 @@ def keep_only_chunks(mine, stub, keep, path):
     starts = [0 if p == 0 else mine.rfind("\n", 0, p) + 1 for p in
               (m.start() for m in re.finditer(r"// EXERCISE ", mine))]
     # (the stubs throw wb::NotImplemented, which the student's own includes may not declare)
-    out = f'#include "common/error.hpp"\n#line 1 "{path}"\n' + mine[:starts[0] if starts else len(mine)]
+    out = f'#include "common/base/error.hpp"\n#line 1 "{path}"\n' + mine[:starts[0] if starts else len(mine)]
     for k, begin in enumerate(starts):
         end = starts[k + 1] if k + 1 < len(starts) else len(mine)
         ex_id = re.match(r"[^\s:]+", mine[mine.index("// EXERCISE ", begin) + 12:])

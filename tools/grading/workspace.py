@@ -17,8 +17,8 @@ FRAMEWORK_LIBRARIES = ("libglad.a", "common/libwb_common.a", "tests/harness/libw
 
 
 def instructor_paths():
-    """What the student edition leaves out (tools/instructor_paths.txt), relative to ROOT."""
-    lines = (ROOT / "tools/instructor_paths.txt").read_text().splitlines()
+    """What the student edition leaves out (tools/grading/instructor_paths.txt), relative to ROOT."""
+    lines = (ROOT / "tools/grading/instructor_paths.txt").read_text().splitlines()
     return [l.strip() for l in lines if l.strip() and not l.startswith("#")]
 
 

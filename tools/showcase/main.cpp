@@ -1,13 +1,13 @@
 // The showcase: every technique of the ten labs on one scene, in one window (./workbook showcase).
 // ---------------------------------------------------------------------------------------------
-// Each technique is a lab's own solution, hosted (common/hosted_lab.hpp): nothing is copied here.
+// Each technique is a lab's own solution, hosted (common/shell/embedded_lab.hpp): nothing is copied here.
 // showcase.technique switches live and keeps the camera; the shared split screen compares any two
 // techniques (compare showcase.technique) or two settings of one; "ray_traced" is the exact
 // visibility as a render mode, timed like the others; "Measure" compares any of them with it (and
 // with the area-light reference, since the scene's spot light has a size).
 // ./workbook showcase --table sweeps every technique with --metrics into one table.
-#include "common/bench.hpp"
-#include "common/hosted_lab.hpp"
+#include "common/shell/bench.hpp"
+#include "common/shell/embedded_lab.hpp"
 
 #include <imgui.h>
 
@@ -16,7 +16,7 @@
 #include <vector>
 
 namespace wb::showcase {
-extern const std::vector<std::pair<std::string, HostedLab::MainFunction>> kLabMains;  // generated
+extern const std::vector<std::pair<std::string, EmbeddedLab::MainFunction>> kLabMains;  // generated
 }
 
 namespace {
@@ -50,7 +50,7 @@ const std::vector<Technique> kTechniques = {
 const std::vector<std::string> kKernels = {"lab", "1", "3", "5", "7"};
 const std::vector<std::string> kMapSizes = {"lab", "512", "1024", "2048", "4096"};
 
-wb::HostedLab::MainFunction mainOf(const std::string& lab) {
+wb::EmbeddedLab::MainFunction mainOf(const std::string& lab) {
   for (const auto& [name, f] : wb::showcase::kLabMains)
     if (name == lab) return f;
   throw wb::Error("the showcase was built without lab " + lab);
@@ -69,7 +69,7 @@ class Showcase : public wb::Lab {
                        "shadow.map_size set in every technique with a map (lab: each lab's own setting)");
     own.include(settings, [](const wb::Setting& s) { return s.name != "alpha.cutoff" && s.name != "light.index"; });
     own.onChange("showcase.technique", [this] { adopt(); });
-    for (const auto& t : kTechniques) hosted.push_back(std::make_unique<wb::HostedLab>(t.lab, mainOf(t.lab), t.sets));
+    for (const auto& t : kTechniques) hosted.push_back(std::make_unique<wb::EmbeddedLab>(t.lab, mainOf(t.lab), t.sets));
     frameMs.assign(kTechniques.size(), wb::RollingTimes());
     splitMs.assign(kTechniques.size(), wb::RollingTimes());
     lastMeasured.assign(kTechniques.size(), "");
@@ -97,7 +97,7 @@ class Showcase : public wb::Lab {
   }
 
   void render() override {
-    wb::HostedLab& h = *hosted[size_t(technique)];
+    wb::EmbeddedLab& h = *hosted[size_t(technique)];
     const Technique& t = kTechniques[size_t(technique)];
     if (kernel > 0 && *t.kernelKey)
       h.lab().tunables().assign(std::string(t.kernelKey) + "=" + kKernels[size_t(kernel)]);
@@ -151,18 +151,18 @@ class Showcase : public wb::Lab {
     clearWarnings();  // the warnings shown are the technique's own (a cube map's stays with the cube map)
     hosted[size_t(technique)]->resendWarnings();
     settings = own;
-    settings.include(hosted[size_t(technique)]->lab().tunables(), wb::HostedLab::shown);
+    settings.include(hosted[size_t(technique)]->lab().tunables(), wb::EmbeddedLab::shown);
     shown = technique;
   }
 
-  std::vector<std::unique_ptr<wb::HostedLab>> hosted;  // one per technique, in kTechniques' order
-  wb::Settings own;                                    // showcase.* and camera.bookmark
-  std::vector<wb::RollingTimes> frameMs;               // per technique, its whole frames
-  std::vector<wb::RollingTimes> splitMs;               // per technique, split-screen frames with it in a half
-  bool measuredLastFrame = false;                      // that frame's time includes a measurement
-  std::vector<std::string> lastMeasured;               // per technique, its last whole-frame measurement
-  int technique = 2, shown = -1;                       // pcf
-  int kernel = 2, mapSize = 2;                         // 3 taps, 1024 texels: seed 000's defaults
+  std::vector<std::unique_ptr<wb::EmbeddedLab>> hosted;  // one per technique, in kTechniques' order
+  wb::Settings own;                                      // showcase.* and camera.bookmark
+  std::vector<wb::RollingTimes> frameMs;                 // per technique, its whole frames
+  std::vector<wb::RollingTimes> splitMs;                 // per technique, split-screen frames with it in a half
+  bool measuredLastFrame = false;                        // that frame's time includes a measurement
+  std::vector<std::string> lastMeasured;                 // per technique, its last whole-frame measurement
+  int technique = 2, shown = -1;                         // pcf
+  int kernel = 2, mapSize = 2;                           // 3 taps, 1024 texels: seed 000's defaults
   float lastDt = 1.0f / 60;
 };
 

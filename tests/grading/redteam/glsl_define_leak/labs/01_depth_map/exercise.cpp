@@ -2,7 +2,7 @@
 // delete. Check your work with: ./workbook check 01
 #include "exercise.hpp"
 
-#include "common/error.hpp"
+#include "common/base/error.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -1,7 +1,7 @@
 // Lab 01 C++ exercises.
 #include "exercise.hpp"
 
-#include "common/error.hpp"
+#include "common/base/error.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -11,9 +11,11 @@
 namespace lab01 {
 static const char* rt_all = R"RT(
 // EXERCISE 01.1
-)RT" R"RT(
+)RT"
+                            R"RT(
 // EXERCISE 01.2
-)RT" R"RT(
+)RT"
+                            R"RT(
 // EXERCISE Z9
 )RT";
 

@@ -1,0 +1,233 @@
+/// @file lab.hpp
+/// What a lab sees: the hooks it overrides (init, update, render, ui) and a handful of helpers
+/// (loadProgram, attempt / glslExercise, timePass, warn, the shadow and camera-pass helpers). The
+/// machinery behind them (the app, command line, frame target, debug views, measurement, bench)
+/// lives in files a lab author can leave closed. A lab's main() is one line: wb::run<MyLab>().
+#pragma once
+#include "common/base/error.hpp"
+#include "common/base/settings.hpp"
+#include "common/base/value_codec.hpp"
+#include "common/exercise/exercise_board.hpp"
+#include "common/exercise/exercise_tape.hpp"
+#include "common/platform/frame_target.hpp"
+#include "common/platform/gl.hpp"
+#include "common/platform/gpu_timers.hpp"
+#include "common/platform/shader.hpp"
+#include "common/scene/camera.hpp"
+#include "common/scene/light_view.hpp"
+#include "common/scene/scene.hpp"
+#include "common/shadows/prefilter.hpp"
+#include "common/shadows/shadow_map.hpp"
+#include "common/shell/command_line.hpp"
+#include "common/shell/debug_views.hpp"
+
+#include <glm/glm.hpp>
+
+#include <functional>
+#include <list>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace wb {
+
+class LabHost;
+
+/// How a lab makes its shadows, so that it gets only the shared settings that mean something there.
+enum class ShadowKind {
+  Map,      ///< from a shadow map: shadow.map_size and the map's debug views (debug.*)
+  Geometry  ///< from geometry (stencil shadow volumes): no map, so neither of those
+};
+
+/// Base class of every lab. Override the hooks; use the protected helpers.
+class Lab {
+ public:
+  /// @param defaultScene scene file relative to the repository root. The lab's number, title and
+  /// exercise list come from its exercises.json, the one list shared with the tests and grading.
+  /// @param kind how the lab makes its shadows (which shared settings it gets).
+  explicit Lab(std::string defaultScene, ShadowKind kind = ShadowKind::Map);
+  virtual ~Lab();
+  Lab(const Lab&) = delete;
+  Lab& operator=(const Lab&) = delete;
+
+  /// The lab's exercises and their states.
+  const ExerciseBoard& board() const { return board_; }
+  /// This lab's tunables: the same values the UI edits, --set assigns and --list-settings prints.
+  Settings& tunables() { return settings; }
+  /// The scene file used when none is named.
+  const std::string& defaultScene() const { return defaultScene_; }
+
+ protected:
+  /// Creates GL resources; called once after the context and scene exist. Read it as a table of contents.
+  virtual void init() = 0;
+  /// Advances animation by `dt` seconds (fixed 1/60 s in headless runs, so captures repeat).
+  virtual void update(float /*dt*/) {}
+  /// Draws one frame into the frame target: color (attachment 0), visibility (1) and world
+  /// position (2); shaders/wb/outputs.glsl declares them.
+  virtual void render() = 0;
+  /// Adds the lab's own widgets to its Settings window.
+  virtual void ui() {}
+  /// Called after the frame was measured against exact visibility (the Measure button, --metrics,
+  /// a presenter step), with the measured numbers on one line; `split` when the frame was split.
+  virtual void measured(const std::string& /*numbers*/, bool /*split*/) {}
+  /// The split screen of this frame (on, the setting compared and its two values).
+  const CompareChoice& comparison() const { return comparison_; }
+
+  /// Builds a program that is hot-reloaded with the others; a broken edit keeps the last good one.
+  Program& loadProgram(std::vector<ShaderStage> stages, std::string defines = {});
+  /// Registers a GLSL exercise and the expression that probes whether it is implemented; the
+  /// expression is evaluated in a vertex shader with `file` included and compared with WB_TODO; it
+  /// may read wb_tex0 (a 2D texture) and wb_tex1 (a cube map).
+  void glslExercise(const std::string& id, const std::string& file, const std::string& probe) {
+    board_.addProbe(id, file, probe);
+  }
+  /// Runs a C++ exercise call, recording Implemented / NotImplemented / Failed; true on success.
+  template <class F>
+  bool attempt(const std::string& id, F&& call) {
+    return runExercise(
+        id, [&] { return call(), nlohmann::json(); }, [](const nlohmann::json&) {});
+  }
+  /// Runs a C++ exercise that produces a value: `out = call()`. When the grader replays a
+  /// student's run (ExerciseTape), `out` is the student's recorded value instead.
+  template <class T, class F>
+  bool attempt(const std::string& id, T& out, F&& call) {
+    return runExercise(
+        id, [&] { return out = call(), encode(out); }, [&](const nlohmann::json& v) { out = decode<T>(v); });
+  }
+  /// Runs a C++ exercise that sets the depth pass's rasterizer state (polygon offset, culling);
+  /// a replay sets the state the student's call left.
+  template <class F>
+  bool attemptRasterState(const std::string& id, F&& call) {
+    return runExercise(
+        id, [&] { return call(), captureRasterState(); }, applyRasterState);
+  }
+  /// Records an exercise's state (shown in the info panel, printed and recorded by headless runs).
+  void setStatus(const std::string& id, ExerciseState state, const std::string& message) {
+    board_.set(id, state, message);
+  }
+
+  /// PASS 1 of most labs: draws the scene's depth into `map` as seen through `lightViewProj` with
+  /// `depthProgram` (setting u_lightViewProj and u_alphaCutoff), and shows `light` in the debug views.
+  void renderShadowMap(const Program& depthProgram, const ShadowMap& map, const Light& light,
+                       const glm::mat4& lightViewProj);
+  /// PASS 1 for a point light: the six faces of `map`, face k through `faceViewProj[k]` (set as
+  /// u_lightViewProj; set the rest first). Shows the cube in the debug views.
+  void renderShadowMap(const Program& depthProgram, const CubeShadowMap& map, const Light& light,
+                       const std::vector<glm::mat4>& faceViewProj, bool linearDistance);
+  /// PASS 1 for cascades: layer k of `map` through `layerViewProj[k]`. Shows every layer.
+  void renderShadowMap(const Program& depthProgram, const ShadowMapArray& map, const Light& light,
+                       const std::vector<glm::mat4>& layerViewProj);
+  /// PASS 1 of the filterable techniques (ESM, VSM, EVSM): clears `map` to `far` (the stored value
+  /// of depth 1), draws the scene with `writer` (u_lightViewProj and u_alphaCutoff set; set the
+  /// rest first), prefilters it with `blur`, and shows `light` in the debug views. Times "shadow"
+  /// and "prefilter".
+  void renderFilteredShadowMap(const Program& writer, FilteredShadowMap& map, const float far[4], const Program& blur,
+                               const Light& light, const glm::mat4& lightViewProj);
+  /// PASS 2 of most labs: binds the frame target and sets what every camera pass reads: u_viewProj,
+  /// u_lightViewProj, u_alphaCutoff, `shadowMap` on texture unit 0 as u_shadowMap, and `light` for
+  /// wbToLight() and wbLightReach() (shaders/wb/lighting.glsl), so every technique is lit alike.
+  void beginCameraPass(const Program& program, const Light& light, const glm::mat4& lightViewProj, GLuint shadowMap);
+  /// Binds the offscreen frame target (colour, visibility, position, depth + stencil) and its viewport.
+  void bindFrameTarget() const { target_->bind(); }
+  /// The frame target's size in pixels.
+  glm::ivec2 frameSize() const { return target_->size(); }
+  /// The view-projection the scene is seen through: the camera, or the light in "view from light".
+  glm::mat4 viewProj() const;
+  /// The eye position matching viewProj().
+  glm::vec3 viewPosition() const;
+  /// Tells the debug views and measurements about the light and its map; the render helpers call it.
+  void showLight(const LightView& light) { light_ = light, lightShown_ = true; }
+  /// The shadow map size chosen in the UI or by --set, clamped to GL_MAX_TEXTURE_SIZE.
+  int shadowMapSize();
+  /// Registers the shadow.bias setting (a constant depth bias, from 0 to `max`), for labs whose
+  /// shaders use it; `help` says what unit it is in.
+  void useDepthBias(float initial = 0.004f, float max = 0.05f,
+                    const char* help = "constant depth bias subtracted from the receiver depth");
+  /// Registers debug.light_face (which face or cascade the view from the light shows), for labs
+  /// whose light has several matrices.
+  void useLightFaces() { debug_.addLightFace(settings); }
+  /// Registers light.size (the spot light's disk diameter, world units: the scene light's "size"
+  /// when it has one and the command line does not set it, else `initial`) and truth.light_samples
+  /// (rays per pixel of the area-light reference), for labs with soft shadows.
+  void useLightSize(float initial);
+  /// The light's size (useLightSize() registers its setting; 0 without it).
+  float lightSize() const { return lightSize_; }
+  /// The constant depth bias (useDepthBias() registers its setting).
+  float depthBias() const { return bias_; }
+  /// Texels of alpha-tested materials below this alpha are holes (setting alpha.cutoff); the exact
+  /// visibility uses the same value.
+  float alphaCutoff() const { return alphaCutoff_; }
+  /// A warning shown in the info panel (and printed once on stderr).
+  void warn(const std::string& message);
+  /// Forgets the warnings shown (a host that switches the lab it shows: the showcase).
+  void clearWarnings() { warnings_.clear(); }
+
+  /// Times a pass's GPU work until it is destroyed.
+  using PassTimer = GpuTimers::Scope;
+  /// Starts timing a pass: `auto t = timePass("shadow");`.
+  PassTimer timePass(const char* name) { return timers_->scope(name); }
+
+  Settings settings;                   ///< this lab's tunables (register them in the constructor)
+  Scene scene;                         ///< the loaded scene file
+  std::unique_ptr<GpuScene> gpuScene;  ///< the scene on the GPU
+  OrbitCamera camera;                  ///< the viewer's camera
+  int lightIndex = 0;                  ///< which scene light casts shadows (setting light.index)
+
+ private:
+  friend class LabHost;      // the host: it loads the scene, calls the hooks and reads the shared state
+  friend class EmbeddedLab;  // a lab inside another lab (the showcase)
+  // Takes `scene` as the lab's: light.index must name one of its lights (else wb::UsageError), and
+  // that light's size becomes light.size unless `keepLightSize` (the command line names it).
+  void adoptScene(Scene scene, bool keepLightSize);
+  void applyMotion();  // light.orbit and camera.dolly, where they changed (the host, every frame)
+  bool runExercise(const std::string& id, const std::function<nlohmann::json()>& call,
+                   const std::function<void(const nlohmann::json&)>& replay);
+  std::string defaultScene_;
+  ExerciseBoard board_;
+  ExerciseTape exerciseTape_;      // --record-exercises / --replay-exercises
+  FrameTarget* target_ = nullptr;  // the host's, while hosted
+  GpuTimers* timers_ = nullptr;
+  LightView light_;
+  bool lightShown_ = false;
+  DebugOptions debug_;
+  int mapSizeChoice_ = 1;  // index into 512..8192
+  float bias_ = 0.004f;
+  bool biasRegistered_ = false;
+  float lightSize_ = 0;
+  bool lightSizeUsed_ = false;  // useLightSize() was called: a scene's light size sets light.size
+  int lightSamples_ = 1;        // index into 16, 64, 256
+  float alphaCutoff_ = 0.5f;
+  int bookmark_ = 1;          // counted from 1, as the keys are
+  CompareChoice comparison_;  // the app's split screen, set every frame
+  float uiScale_ = 0;         // ui.scale: the panels' text size over 16 px (0: follow the monitor)
+  float renderScale_ = 1;     // render.scale: the scene's resolution over the window's (in a window)
+  // Motion for clips (--animate): the lights turned about the vertical axis, the camera moved back.
+  float lightOrbit_ = 0, cameraDolly_ = 0, appliedOrbit_ = 0, appliedDolly_ = 0;
+  std::vector<Light> baseLights_;  // the scene's lights before light.orbit
+  struct {
+    bool srgb = false;  // present.srgb: encode the colour for the screen (the visibility is untouched)
+    bool grid = false;  // present.grid: a faint world-unit grid on the ground
+    int msaa = 0;       // present.msaa: 0 off, 1 four samples per pixel in the camera pass
+  } present_;
+  std::list<Program> programs_;
+  std::vector<std::string> warnings_;
+};
+
+/// Constructs lab T and runs it with the shared command line in a LabHost: `int main(int c, char** v)
+/// { return wb::run<DepthMapLab>(c, v); }`.
+template <class T>
+int run(int argc, char** argv);
+
+/// Set by a program that hosts labs (the showcase, which compiles each lab's main.cpp with main
+/// renamed): while it is set, run<T>() puts a new T here instead of running it.
+extern std::unique_ptr<Lab>* g_hostedLab;
+
+}  // namespace wb
+
+#include "common/shell/lab_host.hpp"
+
+template <class T>
+int wb::run(int argc, char** argv) {
+  if (g_hostedLab) return *g_hostedLab = std::make_unique<T>(), 0;
+  return LabHost::runLab(argc, argv, std::make_unique<T>());
+}

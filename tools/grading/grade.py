@@ -1,0 +1,34 @@
+#!/usr/bin/python3
+"""Grades student submissions of the Shadow Lab Workbook: ./workbook grade (see docs/instructors.md).
+
+A submission is a folder or an archive (.zip, .tar, .tar.gz, .tgz) holding a student's copy of the
+workbook, or just its labs/ folder, or (when one lab is graded) just the exercise files, flat. Only
+the exercise files that labs/*/exercises.json names are taken from it. They go into a copy of this
+tree without the instructor material, prebuilt, where an unprivileged user compiles them (one
+compile per lab) and another runs them as the *runner*, without network, recording what the
+exercises produce; the solution's build, the *judge*, decides every score from that record and draws
+every graded scene itself (docs/grading-trust.md). A build that runs past --build-timeout is stopped
+and costs the exercises it was building; whatever else goes wrong with one submission (even a fault
+of the grader) is recorded in its results, never stops a batch.
+
+Outputs per submission (in --out): results.json (Gradescope, rewritten after every exercise so a
+crash mid-way leaves a valid file), junit.xml, report.md and report.html with the reference, result
+and diff images of failed scene tests. With --batch: one such folder per student, gradebook.csv and
+summary.md.
+"""
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # tools/, run as a script or loaded by path
+
+from grading.batch import grade_all, hide_from_sandbox, main, salvage, write_batch_outputs  # noqa: E402,F401
+from grading.chunks import chunk, find_marker, keep_only_chunks  # noqa: E402,F401
+from grading.common import ROOT  # noqa: E402,F401
+from grading.grader import Grader, grader_failed  # noqa: E402,F401
+from grading.report import VISIBILITIES, Results, gradescope_visibility, student_visible  # noqa: E402,F401
+from grading.sandbox import Sandbox  # noqa: E402,F401
+from grading.submission import find_student_file, load_labs, unique_names, unpack  # noqa: E402,F401
+from grading.workspace import Workspace  # noqa: E402,F401
+
+if __name__ == "__main__":
+    sys.exit(main())
