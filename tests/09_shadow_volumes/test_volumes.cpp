@@ -19,6 +19,18 @@ WB_CALLABLE(lab09::nearPlaneMayBeShadowed);
 
 namespace {
 
+// A stencil setup as the tape records it: front then back (stencil fail, depth fail, depth pass), then
+// caps. Through WB_CALL, so that a judge replays what the student's build returned and never runs
+// the student's code itself (an endless loop there once hung the student edition's check).
+std::vector<uint32_t> asNumbers(const lab09::StencilSetup& s) {
+  return {s.front.stencilFail, s.front.depthFail, s.front.depthPass, s.back.stencilFail,
+          s.back.depthFail,    s.back.depthPass,  uint32_t(s.caps)};
+}
+lab09::StencilSetup fromNumbers(const std::vector<uint32_t>& v) {
+  if (v.size() != 7) throw wb::Error("a recorded stencil setup has " + std::to_string(v.size()) + " numbers, not 7");
+  return {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[6] != 0};
+}
+
 std::string listed(const std::vector<uint32_t>& v) {
   std::ostringstream s;
   for (size_t k = 0; k < v.size(); ++k) s << (k ? (k % 6 ? " " : " | ") : "") << v[k];
@@ -184,7 +196,7 @@ static std::string opName(unsigned op) {
 }
 TEST(Lab09, Ex09_4_ZPassCountsFacesInFrontOfTheScene) {
   lab09::StencilSetup s;
-  WB_TRY_EXERCISE(s = lab09::zPassSetup());
+  WB_TRY_EXERCISE(s = fromNumbers(WB_CALL(asNumbers(lab09::zPassSetup()))));
   EXPECT_EQ(s.front.depthPass, unsigned(GL_INCR_WRAP))
       << "WRONG: a front face in front of the scene enters a "
       << "volume: +1, wrapping (GL_INCR_WRAP); got " << opName(s.front.depthPass);
@@ -201,7 +213,7 @@ TEST(Lab09, Ex09_4_ZPassCountsFacesInFrontOfTheScene) {
 
 TEST(Lab09, Ex09_5_ZFailCountsFacesBehindTheSceneWithCaps) {
   lab09::StencilSetup s;
-  WB_TRY_EXERCISE(s = lab09::zFailSetup());
+  WB_TRY_EXERCISE(s = fromNumbers(WB_CALL(asNumbers(lab09::zFailSetup()))));
   EXPECT_EQ(s.back.depthFail, unsigned(GL_INCR_WRAP))
       << "WRONG: a back face behind the scene: +1, wrapping (GL_INCR_WRAP); got " << opName(s.back.depthFail);
   EXPECT_EQ(s.front.depthFail, unsigned(GL_DECR_WRAP))

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # check in the student edition, which has no solution shaders: a scene there draws every GLSL
 # exercise with the student's own, so a wrong 09.2 spills into 09.3's scenes. check must then say
-# "blocked by 09.2" for 09.3, never "wrong". Run with the solution's tests as the student edition
+# that 09.3 passes its own tests and that its scene is checked once 09.2 passes, never "wrong" or
+# "error", and count it in the summary as the grader will (which draws 09.2 with the reference). Run with the solution's tests as the student edition
 # runs them (--as-student-edition) on GLSL mutants (WB_SUBMISSION_DIR), in ctest's direct mode.
 # Usage: student_edition_attribution_test.sh BUILD_DIR
 set -euo pipefail
@@ -13,10 +14,17 @@ for mutant in 09_shadow_volumes/w_ignored:09.2 10_cascades/interval_off_by_one:1
   WB_TEST_OUTPUT_DIR="$out" WB_SUBMISSION_DIR="$build/mutants/$lab/$name" \
     "$build/lab${nn}_solution_tests" --as-student-edition --check >"$out/check.log" 2>&1 || true
   wrong=$(awk '$1 ~ /^[0-9][0-9]\.[0-9x]$/ && $2 == "wrong" { print $1 }' "$out/check.log" | tr '\n' ' ')
-  if [ "$wrong" = "$id " ]; then
-    echo "ok: $lab/$name: check marks $id alone wrong; $(grep -c "blocked by $id" "$out/check.log") blocked by it"
+  errors=$(awk '$1 ~ /^[0-9][0-9]\.[0-9x]$/ && $2 == "error" { print $1 }' "$out/check.log" | tr '\n' ' ')
+  waiting=$(grep -c "its scene is checked once $id passes" "$out/check.log" || true)
+  # Every other exercise is the solution's: the summary must count all of them, as the grader does.
+  summary=$(grep -o "[0-9]* of [0-9]* exercises pass their tests" "$out/check.log" || true)
+  passing=${summary%% of *} total=${summary#* of } && total=${total%% *}
+  if [ "$wrong" = "$id " ] && [ -z "$errors" ] && [ "$passing" = $((total - 1)) ]; then
+    echo "ok: $lab/$name: check marks $id alone wrong; $waiting pass their own tests and wait on it:" \
+      "$(grep "exercises pass their tests" "$out/check.log")"
   else
-    echo "FAIL: $lab/$name (a mistake in $id), as the student edition: check marks wrong: '${wrong}'"
+    echo "FAIL: $lab/$name (a mistake in $id), as the student edition: check marks wrong: '${wrong}', error:" \
+      "'${errors}', and says '$summary' (want $((total - 1)) of $total)"
     sed -n '/^Lab /,$p' "$out/check.log"
     failures=$((failures + 1))
   fi

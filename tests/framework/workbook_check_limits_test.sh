@@ -2,8 +2,10 @@
 # ./workbook check runs each exercise's runner alone, in a session of its own, with a time limit
 # (run_exercise_runner): a runner that loops forever is stopped at the limit with every process it
 # started, and one that crashes is named with its signal; both reasons reach the judge
-# (stopped.txt), and the other exercises' records are kept. A fake lab stands in for the build:
-# 77.1 records, 77.2 loops (with a child that would outlive it), 77.3 crashes.
+# (stopped.txt), and the other exercises' records are kept; one that prints without end is stopped
+# when its log reaches the cap, which says that it was cut. The judge is bounded too (run_judge): one
+# that never ends is stopped at its limit, naming the test it was in. A fake lab stands in for the
+# build: 77.1 records, 77.2 loops (with a child that would outlive it), 77.3 crashes, 77.4 floods.
 # Usage: workbook_check_limits_test.sh SCRATCH_DIR
 set -uo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -22,23 +24,44 @@ case $filter in
   *Ex77_1_*) echo '{"key":"Lab77.Ex77_1_A#0","value":1}' >"$dir/tape.jsonl" ;;
   *Ex77_2_*) sleep 1000 & echo $! >"$dir/../child.pid"; while :; do :; done ;;
   *Ex77_3_*) echo "crashed (SIGSEGV: test) in exercise 77.3, at labs/77_fake/exercise.cpp:9 (f)" >&2; kill -SEGV $$ ;;
+  *Ex77_4_*) exec yes "a debug print in a loop" ;;
 esac
 FAKE
 chmod +x build/lab77_tests
 tape=$tmp/tape
 mkdir -p "$tape/all"
 start=$(date +%s)
-for id in 77.1 77.2 77.3; do run_exercise_runner 77 "$id" "$tape" 3 2>/dev/null; done
+export WB_CHECK_LOG_MB=1
+for id in 77.1 77.2 77.3 77.4; do run_exercise_runner 77 "$id" "$tape" 3 2>/dev/null; done
 took=$(($(date +%s) - start))
-[ "$took" -le 10 ] || fail "three runners with a 3 s limit took $took s"
+[ "$took" -le 12 ] || fail "four runners with a 3 s limit took $took s"
 grep -q '"Lab77.Ex77_1_A#0"' "$tape/all/tape.jsonl" || fail "77.1's record was not kept: $(cat "$tape/all/tape.jsonl")"
 grep -q "^Ex77_2	77.2 timed out after 3 s and was stopped: an endless loop?" "$tape/all/stopped.txt" ||
   fail "the endless runner is not named: $(cat "$tape/all/stopped.txt")"
 grep -q "^Ex77_3	crashed (SIGSEGV: test) in exercise 77.3, at labs/77_fake/exercise.cpp:9" "$tape/all/stopped.txt" ||
   fail "the crash is not named with its place: $(cat "$tape/all/stopped.txt")"
+grep -q "^Ex77_4	77.4 wrote more than 1 MB of output (a print in a loop?) and was stopped" "$tape/all/stopped.txt" ||
+  fail "the flooding runner is not named: $(cat "$tape/all/stopped.txt")"
+size=$(stat -c %s "$tape/Ex77_4.log")
+[ "$size" -le $((1024 * 1024 + 200)) ] || fail "the flooding runner's log holds $size bytes, more than the 1 MB cap"
+tail -1 "$tape/Ex77_4.log" | grep -q "^\[workbook: cut here: the run wrote more than 1 MB" ||
+  fail "the cut log does not say it was cut: $(tail -c 200 "$tape/Ex77_4.log")"
+# A judge that never ends (its tests call an endless exercise) is stopped at its limit, naming where.
+cat >build/lab77_judge <<'FAKE'
+#!/usr/bin/env bash
+echo "Lab77.Ex77_2_Loops" >"$WB_PROGRESS_FILE"
+while :; do :; done
+FAKE
+chmod +x build/lab77_judge
+start=$(date +%s)
+out=$(WB_CHECK_JUDGE_TIMEOUT=2 run_judge 77 build/lab77_judge "$tape" labs/77_fake 3 2>&1) && fail "an endless judge exited 0"
+took=$(($(date +%s) - start))
+[ "$took" -le 9 ] || fail "an endless judge with a 2 s limit took $took s"
+grep -q "judging lab 77 ran past 2 s and was stopped in Lab77.Ex77_2_Loops (exercise 77.2)" <<<"$out" ||
+  fail "the endless judge is not named: $out"
 child=$(cat "$tape/child.pid" 2>/dev/null)
 alive() { [ -n "$(ps -o stat= -p "$1" 2>/dev/null | grep -v Z)" ]; }  # (a zombie waits for its reaper only)
 for _ in 1 2 3 4 5 6 7 8 9 10; do alive "$child" || break; sleep 0.2; done
 [ -n "$child" ] && ! alive "$child" || fail "a process the endless runner started is still running ($child)"
-[ "$failures" = 0 ] && echo "check's limits: a loop stopped with its children, a crash named, the rest kept"
+[ "$failures" = 0 ] && echo "check's limits: a loop stopped with its children, a crash named, a flood cut, an endless judge stopped, the rest kept"
 exit $((failures > 0))

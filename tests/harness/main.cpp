@@ -23,6 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -87,8 +88,14 @@ class CheckListener : public ::testing::EmptyTestEventListener {
       return x.verdict == "ERROR" ? 3 : x.verdict == "NOT IMPLEMENTED" ? 1 : 2;
     };
     // (The grader's convention: a test that draws a scene has Scene or Measured in its name.)
+    static const std::regex blockedRe(R"(^ERROR: blocked by ([0-9.x, ]+):)");
+    std::smatch by;
     if (test_.find("Scene") == std::string::npos && test_.find("Measured") == std::string::npos)
       ownFailed_.insert(current_);
+    else if (std::regex_search(d.headline, by, blockedRe))
+      blockers_[current_] += (blockers_[current_].empty() ? "" : ", ") + by[1].str();
+    else
+      unblocked_.insert(current_);
     if (current_.empty()) {  // a test of the lab as a whole (its files, markers, manifest), not of one exercise
       if (others_.empty() || others_.back().first != test_) others_.emplace_back(test_, std::move(d));
       return;
@@ -104,6 +111,7 @@ class CheckListener : public ::testing::EmptyTestEventListener {
   void OnTestProgramEnd(const ::testing::UnitTest&) override {
     const auto manifest = readManifest();
     blockWhereNoReference(manifest);
+    waitWhereNoReference();
     for (auto& [id, lines] : hints_)
       for (const auto& line : lines)
         if (auto& d = first_[id];
@@ -115,15 +123,17 @@ class CheckListener : public ::testing::EmptyTestEventListener {
     else
       std::printf("\nLab %s: %s build\n", wb::variant::kLab, wb::variant::kName);
     std::printf("  %-5s %-16s %s\n", "ID", "status", "exercise (then what was found)");
-    int done = 0;
+    int done = 0, waiting = 0;
     nlohmann::json verdicts = nlohmann::json::object();  // WB_CHECK_JSON: for the app's live checks
     for (const auto& e : manifest) {
       const wb::test::Diagnosis d = first_.count(e.id) ? first_[e.id] : wb::test::Diagnosis{};
       const std::string status = d.verdict.empty()                ? "passes its tests"
+                                 : d.verdict == "WAITS"           ? "passes own tests"
                                  : d.verdict == "NOT IMPLEMENTED" ? "not implemented"
                                  : d.verdict == "ERROR"           ? "error"
                                                                   : "wrong";
-      done += d.verdict.empty();
+      done += d.verdict.empty() || d.verdict == "WAITS";
+      waiting += d.verdict == "WAITS";
       if (expectStubs_ && status != "not implemented") exitCode = 1;
       // The whole title on the verdict's line; what was found below it, where it has room.
       std::printf("  %-5s %-16s %s\n", e.id.c_str(), status.c_str(), e.title.c_str());
@@ -141,7 +151,11 @@ class CheckListener : public ::testing::EmptyTestEventListener {
       return;
     }
     if (!expectStubs_ && done != int(manifest.size())) exitCode = 1;
-    std::printf("  %d of %zu exercises pass their tests.%s\n", done, manifest.size(),
+    const std::string waits =
+        waiting ? " (" + std::to_string(waiting) + " by their own tests: the grader draws their " +
+                      "scenes with the reference for the others, and gives them their points " + "if those pass)"
+                : "";
+    std::printf("  %d of %zu exercises pass their tests%s.%s\n", done, manifest.size(), waits.c_str(),
                 expectStubs_ ? (exitCode ? " Some stubs are not reported as NOT IMPLEMENTED."
                                          : " Every stub reports NOT IMPLEMENTED.")
                              : "");
@@ -161,12 +175,30 @@ class CheckListener : public ::testing::EmptyTestEventListener {
         if (e.id != id && e.file.rfind("shaders/", 0) == 0 && ownFailed_.count(e.id))
           by += (by.empty() ? "" : ", ") + e.id;
       if (by.empty()) continue;
+      blockers_[id] = by, unblocked_.erase(id);  // (its scene failures are put down to `by`)
       d.details.insert(d.details.begin(), d.headline);
       d.verdict = "ERROR";
       d.headline = "ERROR: blocked by " + by + ": only " + id + "'s scene tests fail, and " + by +
                    " fails its own tests. Here every scene draws your GLSL exercises as they are (the grader "
                    "draws the others with the reference): fix " +
                    by + " first, then check again.";
+    }
+  }
+
+  // In the student edition, an exercise that passes its own tests and whose scene tests fail only
+  // because another exercise blocks them (drawn with the student's own code for the others) is not an
+  // error: the grader draws its scenes with the reference for the others, and gives it its points if
+  // they match. It "passes its own tests", counts in the summary, and says what its scene waits on.
+  void waitWhereNoReference() {
+    if (*wb::variant::kSolutionDir) return;
+    for (auto& [id, d] : first_) {
+      const auto by = blockers_.find(id);
+      if (d.verdict != "ERROR" || ownFailed_.count(id) || unblocked_.count(id) || by == blockers_.end()) continue;
+      d.details.clear();  // (its scene's failures are the blocker's)
+      d.verdict = "WAITS";
+      d.headline = "passes its own tests; its scene is checked once " + by->second +
+                   " passes (here every scene draws your other exercises as they are; the grader draws them with "
+                   "the reference)";
     }
   }
 
@@ -202,8 +234,10 @@ class CheckListener : public ::testing::EmptyTestEventListener {
   std::string current_;        // the exercise of the running test
   std::string test_;           // and the test ("Suite.Name")
   std::map<std::string, wb::test::Diagnosis> first_;
-  std::set<std::string> ownFailed_;                        // the exercises that fail a test that draws no scene
-  std::map<std::string, std::vector<std::string>> hints_;  // the known mistakes each exercise's tests saw
+  std::set<std::string> ownFailed_;              // the exercises that fail a test that draws no scene
+  std::map<std::string, std::string> blockers_;  // what blocks each exercise's scene tests ("07.4", "09.2, 09.3")
+  std::set<std::string> unblocked_;              // the exercises with a scene test that fails on its own
+  std::map<std::string, std::vector<std::string>> hints_;            // the known mistakes each exercise's tests saw
   std::vector<std::pair<std::string, wb::test::Diagnosis>> others_;  // failing tests of no one exercise
 };
 
@@ -237,6 +271,19 @@ TEST(Manifest, EveryExerciseHasItsMarker) {
         << "' line: keep the comment line above each exercise (the grader finds your exercises by it)";
   }
 }
+
+// With WB_PROGRESS_FILE set, the name of the test that runs now is in that file, so that whoever
+// stops a run that took too long can say where it was (./workbook check's judge).
+class ProgressListener : public ::testing::EmptyTestEventListener {
+ public:
+  explicit ProgressListener(std::string file) : file_(std::move(file)) {}
+  void OnTestStart(const ::testing::TestInfo& info) override {
+    std::ofstream(file_, std::ios::trunc) << info.test_suite_name() << "." << info.name() << "\n";
+  }
+
+ private:
+  std::string file_;
+};
 
 int main(int argc, char** argv) {
   wb::installCrashReport();  // a crash in an exercise names its file:line
@@ -283,8 +330,10 @@ int main(int argc, char** argv) {
     }
     return wb::test::recordRequestedRuns(requests);
   }
-  if (!check) return RUN_ALL_TESTS();
   auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
+  if (const char* progress = std::getenv("WB_PROGRESS_FILE"); progress && *progress)
+    listeners.Append(new ProgressListener(progress));
+  if (!check) return RUN_ALL_TESTS();
   delete listeners.Release(listeners.default_result_printer());
   auto* listener = new CheckListener(expectStubs, signatures);
   listener->expectMistake = expectMistake, listener->expectHint = expectHint;
