@@ -112,6 +112,7 @@ class CheckListener : public ::testing::EmptyTestEventListener {
     const auto manifest = readManifest();
     blockWhereNoReference(manifest);
     waitWhereNoReference();
+    markStops(manifest);
     for (auto& [id, lines] : hints_)
       for (const auto& line : lines)
         if (auto& d = first_[id];
@@ -199,6 +200,22 @@ class CheckListener : public ::testing::EmptyTestEventListener {
       d.headline = "passes its own tests; its scene is checked once " + by->second +
                    " passes (here every scene draws your other exercises as they are; the grader draws them with "
                    "the reference)";
+    }
+  }
+
+  // An exercise whose run was stopped (its runner, or a judge's test that ./workbook check stopped and
+  // then judged the rest without: stopped.txt says which and why) is an error, whatever its tests
+  // that did run say.
+  void markStops(const std::vector<ManifestEntry>& manifest) {
+    for (const auto& e : manifest) {
+      std::string tag = "Ex" + e.id;
+      std::replace(tag.begin(), tag.end(), '.', '_');
+      const auto stop = wb::test::stoppedRuns().find(tag);
+      if (stop == wb::test::stoppedRuns().end()) continue;
+      auto& d = first_[e.id];
+      if (d.verdict == "ERROR") continue;
+      d.details.clear();
+      d.verdict = "ERROR", d.headline = "ERROR: " + stop->second;
     }
   }
 

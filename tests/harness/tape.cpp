@@ -37,6 +37,7 @@ std::string sanitize(const std::string& key) {
 
 TapeMode tapeMode() { return g_mode; }
 const fs::path& tapeDir() { return g_dir; }
+const std::map<std::string, std::string>& stoppedRuns() { return g_stops; }
 
 void openTape(TapeMode mode, const fs::path& dir) {
   g_mode = mode, g_dir = dir;
@@ -49,7 +50,8 @@ void openTape(TapeMode mode, const fs::path& dir) {
   // runs each exercise's runner alone with a time limit (the grader keeps its own account of that).
   std::ifstream stops(dir / "stopped.txt");
   for (std::string line; std::getline(stops, line);)
-    if (const auto tab = line.find('\t'); tab != std::string::npos) g_stops[line.substr(0, tab)] = line.substr(tab + 1);
+    if (const auto tab = line.find('\t'); tab != std::string::npos)  // (the first reason: the runner's)
+      g_stops.emplace(line.substr(0, tab), line.substr(tab + 1));
   std::ifstream in(dir / "tape.jsonl");  // a missing or damaged tape replays as "nothing recorded"
   for (std::string line; std::getline(in, line);) {
     try {

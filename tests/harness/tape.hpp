@@ -15,6 +15,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -39,6 +40,9 @@ enum class TapeMode {
 TapeMode tapeMode();
 /// The tape's folder ("" when direct).
 const std::filesystem::path& tapeDir();
+/// Replaying: why a run of an exercise was stopped, by its tag ("Ex09_4" -> reason), from the tape's
+/// stopped.txt (./workbook check writes it for runners, and for a judge's test it had to stop).
+const std::map<std::string, std::string>& stoppedRuns();
 /// Sets the mode (main() does, from --runner / --judge); Replay loads DIR/tape.jsonl.
 void openTape(TapeMode mode, const std::filesystem::path& dir);
 
