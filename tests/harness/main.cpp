@@ -17,6 +17,7 @@
 #include "common/base/variant.hpp"
 #include "common/exercise/crash_report.hpp"
 #include "common/exercise/glsl_harness.hpp"
+#include "tests/harness/attribution.hpp"
 #include "tests/harness/diagnosis.hpp"
 #include "tests/harness/harness.hpp"
 
@@ -39,13 +40,9 @@ extern bool g_updateGolden;
 
 namespace {
 
-struct ManifestEntry {
-  std::string id, title, file;
-};
-
-std::vector<ManifestEntry> readManifest() {
+std::vector<wb::test::ManifestEntry> readManifest() {
   std::ifstream in(fs::path(wb::variant::kLabDir) / "exercises.json");
-  std::vector<ManifestEntry> out;
+  std::vector<wb::test::ManifestEntry> out;
   const auto manifest = nlohmann::json::parse(in);  // keep it alive while iterating
   for (const auto& e : manifest.at("exercises"))
     out.push_back({e.at("id").get<std::string>(), e.at("title").get<std::string>(), e.at("file").get<std::string>()});
@@ -110,9 +107,7 @@ class CheckListener : public ::testing::EmptyTestEventListener {
   }
   void OnTestProgramEnd(const ::testing::UnitTest&) override {
     const auto manifest = readManifest();
-    blockWhereNoReference(manifest);
-    waitWhereNoReference();
-    markStops(manifest);
+    wb::test::attribute(manifest, {first_, ownFailed_, blockers_, unblocked_});
     for (auto& [id, lines] : hints_)
       for (const auto& line : lines)
         if (auto& d = first_[id];
@@ -163,62 +158,6 @@ class CheckListener : public ::testing::EmptyTestEventListener {
   }
 
  private:
-  // Without the solution's shaders (the student edition) a scene draws every GLSL exercise with the
-  // student's own, so when only an exercise's scene tests fail while a GLSL exercise fails its own
-  // tests, the mistake may be that one's: the exercise is blocked by it, never wrong. (The grader
-  // draws the other exercises with the reference, as the instructor edition's check does.)
-  void blockWhereNoReference(const std::vector<ManifestEntry>& manifest) {
-    if (*wb::variant::kSolutionDir) return;
-    for (auto& [id, d] : first_) {
-      if (d.verdict != "WRONG" || ownFailed_.count(id)) continue;
-      std::string by;
-      for (const auto& e : manifest)
-        if (e.id != id && e.file.rfind("shaders/", 0) == 0 && ownFailed_.count(e.id))
-          by += (by.empty() ? "" : ", ") + e.id;
-      if (by.empty()) continue;
-      blockers_[id] = by, unblocked_.erase(id);  // (its scene failures are put down to `by`)
-      d.details.insert(d.details.begin(), d.headline);
-      d.verdict = "ERROR";
-      d.headline = "ERROR: blocked by " + by + ": only " + id + "'s scene tests fail, and " + by +
-                   " fails its own tests. Here every scene draws your GLSL exercises as they are (the grader "
-                   "draws the others with the reference): fix " +
-                   by + " first, then check again.";
-    }
-  }
-
-  // In the student edition, an exercise that passes its own tests and whose scene tests fail only
-  // because another exercise blocks them (drawn with the student's own code for the others) is not an
-  // error: the grader draws its scenes with the reference for the others, and gives it its points if
-  // they match. It "passes its own tests", counts in the summary, and says what its scene waits on.
-  void waitWhereNoReference() {
-    if (*wb::variant::kSolutionDir) return;
-    for (auto& [id, d] : first_) {
-      const auto by = blockers_.find(id);
-      if (d.verdict != "ERROR" || ownFailed_.count(id) || unblocked_.count(id) || by == blockers_.end()) continue;
-      d.details.clear();  // (its scene's failures are the blocker's)
-      d.verdict = "WAITS";
-      d.headline = "passes its own tests; its scene is checked once " + by->second +
-                   " passes (here every scene draws your other exercises as they are; the grader draws them with "
-                   "the reference)";
-    }
-  }
-
-  // An exercise whose run was stopped (its runner, or a judge's test that ./workbook check stopped and
-  // then judged the rest without: stopped.txt says which and why) is an error, whatever its tests
-  // that did run say.
-  void markStops(const std::vector<ManifestEntry>& manifest) {
-    for (const auto& e : manifest) {
-      std::string tag = "Ex" + e.id;
-      std::replace(tag.begin(), tag.end(), '.', '_');
-      const auto stop = wb::test::stoppedRuns().find(tag);
-      if (stop == wb::test::stoppedRuns().end()) continue;
-      auto& d = first_[e.id];
-      if (d.verdict == "ERROR") continue;
-      d.details.clear();
-      d.verdict = "ERROR", d.headline = "ERROR: " + stop->second;
-    }
-  }
-
   // A mutant of exercise expectMistake must be caught as WRONG, with its own hint or none, never another's:
   // every hint shown names it (alone, or among the "one of these" that give the same value).
   int judgeMutant(const wb::test::Diagnosis& d) const {
