@@ -135,21 +135,53 @@ std::string firstErrorLine(const std::string& message) {
   return line;
 }
 
+namespace {
+
+// Line `line` (1-based) of `file`, or "" when it cannot be read.
+std::string lineOf(const fs::path& file, int line) {
+  std::ifstream in(file);
+  std::string s;
+  for (int k = 0; k < line && std::getline(in, s);) ++k;
+  return in ? s : "";
+}
+
+// Mesa names some errors inside an included file by the top file's source number, with the right
+// line ("0:26(10): error: `zReceiverr' undeclared" for exercise.glsl:26). When a message quotes a
+// name that the named file's line does not hold, and exactly one other file's same line does, that
+// file is meant.
+size_t fileQuoted(const std::string& message, size_t file, int line, const std::vector<fs::path>& files) {
+  static const std::regex quoted(R"([`'"]([A-Za-z_]\w*)['"])");
+  std::smatch m;
+  if (!std::regex_search(message, m, quoted) || lineOf(files[file], line).find(m[1].str()) != std::string::npos)
+    return file;
+  size_t found = file, count = 0;
+  for (size_t k = 0; k < files.size(); ++k)
+    if (k != file && lineOf(files[k], line).find(m[1].str()) != std::string::npos) found = k, ++count;
+  return count == 1 ? found : file;
+}
+
+}  // namespace
+
 std::string mapShaderLog(const std::string& log, const std::vector<fs::path>& files,
                          const std::map<int, std::string>& unquoted) {
   // Mesa writes "2:14(3): error: ...", NVIDIA "2(14) : error ..."; both start with the source number.
   static const std::regex posRe(R"((\d+):(\d+)\((\d+)\)|(\d+)\((\d+)\))");
+  std::map<std::pair<size_t, int>, size_t> meant;  // (source, line) -> the file a quoted name showed
   std::string out;
   std::istringstream in(log);
   for (std::string s; std::getline(in, s);) {
     std::smatch m;
     if (std::regex_search(s, m, posRe)) {
-      const size_t file = std::stoul(m[1].matched ? m[1].str() : m[4].str());
+      size_t file = std::stoul(m[1].matched ? m[1].str() : m[4].str());
       const std::string line = m[1].matched ? m[2].str() : m[5].str();
-      if (const auto said = file < (1u << 30) ? unquoted.find(int(file)) : unquoted.end(); said != unquoted.end())
+      if (const auto said = file < (1u << 30) ? unquoted.find(int(file)) : unquoted.end(); said != unquoted.end()) {
         s = said->second;
-      else if (file < files.size())
+      } else if (file < files.size()) {
+        const auto key = std::make_pair(file, std::stoi(line));
+        if (!meant.count(key)) meant[key] = fileQuoted(m.suffix().str(), file, key.second, files);
+        file = meant[key];
         s = m.prefix().str() + files[file].string() + ":" + line + m.suffix().str();
+      }
     }
     out += s + "\n";
   }

@@ -145,6 +145,26 @@ TEST(Shader, IncludesAreExpandedAndErrorsMapToTheOriginalFileAndLine) {
   EXPECT_THROW(wb::preprocessShader("#include \"missing.glsl\"\n", dir / "x", "", {dir}), wb::Error);
 }
 
+// Mesa names some errors in an included file by the top file's number, with the right line (seen
+// with lab 07's nested includes: "0:26(10): error: `zReceiverr' undeclared" for exercise.glsl:26).
+// The name the message quotes shows which file is meant; a message without one on the same line
+// follows it, and a name that only the named file holds leaves it alone.
+TEST(Shader, AnErrorNamedByTheTopFileIsPutWhereItsNameIs) {
+  const fs::path dir = scratch("misnamed");
+  writeFile(dir / "scene.frag", "#version 410 core\nuniform float zReceiver;\nvoid main() {}\n");
+  writeFile(dir / "exercise.glsl", "// helpers\nfloat f() { return 1.0; }\nfloat g() { return zReceiverr; }\n");
+  const std::vector<fs::path> files = {dir / "scene.frag", dir / "exercise.glsl"};
+  const std::string mapped = wb::mapShaderLog(
+      "0:3(20): error: `zReceiverr' undeclared\n0:3(20): error: operands to arithmetic operators must be numeric\n"
+      "0:2(15): error: `zReceiver' redeclared\n",
+      files);
+  EXPECT_NE(mapped.find((dir / "exercise.glsl").string() + ":3: error: `zReceiverr' undeclared"), std::string::npos)
+      << mapped;
+  EXPECT_NE(mapped.find((dir / "exercise.glsl").string() + ":3: error: operands"), std::string::npos) << mapped;
+  EXPECT_NE(mapped.find((dir / "scene.frag").string() + ":2: error: `zReceiver' redeclared"), std::string::npos)
+      << mapped;
+}
+
 // A broken edit keeps the last good program and reports file:line; fixing it rebuilds.
 using wb::test::GlTest;
 TEST_F(GlTest, HotReloadKeepsTheLastGoodProgram) {

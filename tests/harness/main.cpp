@@ -85,14 +85,18 @@ class CheckListener : public ::testing::EmptyTestEventListener {
       return x.verdict == "ERROR" ? 3 : x.verdict == "NOT IMPLEMENTED" ? 1 : 2;
     };
     // (The grader's convention: a test that draws a scene has Scene or Measured in its name.)
-    static const std::regex blockedRe(R"(^ERROR: blocked by ([0-9.x, ]+):)");
+    static const std::regex blockedRe(R"(^ERROR: blocked by ([0-9.x, ]+):)"), kListSeparator(", ");
     std::smatch by;
-    if (test_.find("Scene") == std::string::npos && test_.find("Measured") == std::string::npos)
+    if (test_.find("Scene") == std::string::npos && test_.find("Measured") == std::string::npos) {
       ownFailed_.insert(current_);
-    else if (std::regex_search(d.headline, by, blockedRe))
-      blockers_[current_] += (blockers_[current_].empty() ? "" : ", ") + by[1].str();
-    else
+    } else if (std::regex_search(d.headline, by, blockedRe)) {
+      std::string& list = blockers_[current_];
+      for (std::sregex_token_iterator k(by[1].first, by[1].second, kListSeparator, -1), end; k != end; ++k)
+        if ((", " + list + ",").find(", " + k->str() + ",") == std::string::npos)
+          list += (list.empty() ? "" : ", ") + k->str();
+    } else {
       unblocked_.insert(current_);
+    }
     if (current_.empty()) {  // a test of the lab as a whole (its files, markers, manifest), not of one exercise
       if (others_.empty() || others_.back().first != test_) others_.emplace_back(test_, std::move(d));
       return;
