@@ -224,9 +224,10 @@ std::vector<glm::vec4> runGlslKernelWithSamplers(const std::string& functions, c
   } catch (const Error& e) {
     // Mesa drops what follows a loop that can never end, the captured output included.
     if (std::string(e.what()).find("varying wb_out undeclared") != std::string::npos)
-      throw Error("your code never returns: the compiler found a loop that cannot end (does its counter "
-                  "change?) and removed everything after it (its words: " +
-                  firstErrorLine(e.what()) + ")");
+      throw Error(
+          "your code never returns: the compiler found a loop that cannot end (does its counter "
+          "change?) and removed everything after it (its words: " +
+          firstErrorLine(e.what()) + ")");
     throw Error(std::string("compile error:\n") + e.what());
   }
 

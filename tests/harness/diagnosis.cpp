@@ -135,8 +135,9 @@ Diagnosis diagnose(const std::string& test, const std::string& message) {
     // llvmpipe stops a loop after 65535 iterations (gallivm's cap; a GPU's driver would hang instead):
     // a count of exactly that, where it should be another, is a loop that never ends.
     if (d.got && (*d.got == 65535 || *d.got == 65536))
-      d.details.push_back("looks like an endless loop: it ran 65535 iterations, the most Mesa's llvmpipe runs one "
-                          "for; on a GPU it would hang (does the loop's counter change?)");
+      d.details.push_back(
+          "looks like an endless loop: it ran 65535 iterations, the most Mesa's llvmpipe runs one "
+          "for; on a GPU it would hang (does the loop's counter change?)");
     if (d.got)
       if (const std::string hint = knownMistake(test, *d.got); !hint.empty())
         d.details.push_back(hint.rfind("one of these:", 0) == 0 ? "looks like a known mistake, " + hint
