@@ -59,6 +59,19 @@ std::string exerciseOf(const std::string& testName) {
 // A line of a diagnosis that names a known mistake (diagnosis.cpp).
 bool namesKnownMistake(const std::string& line) { return line.rfind("looks like a known mistake", 0) == 0; }
 
+// Where exercise `e` starts in the file being judged ("labs/02_bias/shaders/exercise.glsl:16"): the
+// line of its marker, so that a WRONG verdict says where to look; "" when the file has none.
+std::string exerciseLine(const wb::test::ManifestEntry& e) {
+  const char* submission = std::getenv("WB_SUBMISSION_DIR");
+  const fs::path dir = submission && *submission ? fs::path(submission) : fs::path(wb::variant::kLabDir);
+  std::ifstream in(dir / e.file);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const size_t at = wb::findMarker(text, e.id);
+  if (at == std::string::npos) return "";
+  const int line = 1 + int(std::count(text.begin(), text.begin() + long(at), '\n'));
+  return "labs/" + std::string(wb::variant::kLab) + "/" + e.file + ":" + std::to_string(line);
+}
+
 // Collects the first failure of each test and prints the per-exercise table at the end.
 class CheckListener : public ::testing::EmptyTestEventListener {
  public:
@@ -140,6 +153,9 @@ class CheckListener : public ::testing::EmptyTestEventListener {
       if (ran_.count(e.id)) verdicts[e.id] = {{"status", status}, {"headline", d.headline}};
       if (!d.headline.empty()) std::printf("        %s\n", d.headline.c_str());
       for (const auto& line : d.details) std::printf("          %s\n", line.c_str());
+      if (d.verdict == "WRONG")
+        if (const std::string where = exerciseLine(e); !where.empty())
+          std::printf("          your code: %s\n", where.c_str());
     }
     for (const auto& [test, d] : others_) {  // they fail the whole check: say so, and why
       std::printf("  also failing, for the lab as a whole: %s\n        %s\n", test.c_str(), d.headline.c_str());
