@@ -26,6 +26,12 @@ std::pair<size_t, size_t> chunkRange(const std::string& text, const std::string&
   return {begin, end};
 }
 
+bool chunkIsStub(const std::string& text, const std::string& id) {
+  if (findMarker(text, id) == std::string::npos) return false;
+  const auto [begin, end] = chunkRange(text, id);
+  return text.find("WB_TODO", begin) < end;
+}
+
 std::vector<std::pair<std::string, std::string>> splitChunks(const std::string& text) {
   std::vector<size_t> starts;  // the first character of every marker's line
   for (size_t p = text.find("// EXERCISE "); p != std::string::npos; p = text.find("// EXERCISE ", p + 12)) {

@@ -20,6 +20,10 @@ size_t findMarker(const std::string& text, const std::string& id);
 /// marker's line, or the end. Throws wb::Error when `text` has no marker for `id`.
 std::pair<size_t, size_t> chunkRange(const std::string& text, const std::string& id);
 
+/// True when exercise `id`'s chunk of `text` still holds the stub's WB_TODO (not implemented yet);
+/// false when `text` has no marker for `id`.
+bool chunkIsStub(const std::string& text, const std::string& id);
+
 /// The chunks of `text` in order, as (id, text): the preamble "" first (when not empty), then one
 /// per marker. Joined, they are `text` again.
 std::vector<std::pair<std::string, std::string>> splitChunks(const std::string& text);

@@ -16,13 +16,6 @@ const char* const kReferenceSourceNote =
 
 namespace {
 
-// True when exercise `id`'s chunk of `text` still returns the stubs' WB_TODO.
-bool stillStub(const std::string& text, const std::string& id) {
-  if (id.empty() || findMarker(text, id) == std::string::npos) return false;
-  const auto [begin, end] = chunkRange(text, id);
-  return text.find("WB_TODO", begin) < end;
-}
-
 // What a fallback build drew, for the panel: `swapped` holds (file, chunk id) pairs.
 std::string fallbackNote(const std::vector<std::pair<fs::path, std::string>>& swapped, bool stub) {
   if (swapped.size() != 1) return "the last version that compiled is drawn";
@@ -66,7 +59,7 @@ class ExerciseSourceRules : public SourceRules {
           if (where == file) ids.insert(chunk);
         if (!ids.empty()) f.texts[file] = withChunksFrom(textNow(file), text, ids);
       }
-      f.note = fallbackNote(swap, stillStub(good.at(swap[0].first), swap[0].second));
+      f.note = fallbackNote(swap, !swap[0].second.empty() && chunkIsStub(good.at(swap[0].first), swap[0].second));
     }
     return out;
   }

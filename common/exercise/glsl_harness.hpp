@@ -93,5 +93,11 @@ std::vector<glm::vec4> runGlslKernelWithSamplers(const std::string& functions, c
 
 /// True if `v` is the GLSL stubs' sentinel WB_TODO (see shaders/wb/exercise.glsl).
 inline bool isTodo(float v) { return v <= -1e29f; }
+/// True if any component of any result is WB_TODO.
+inline bool anyTodo(const std::vector<glm::vec4>& results) {
+  for (const auto& r : results)
+    if (isTodo(r.x) || isTodo(r.y) || isTodo(r.z) || isTodo(r.w)) return true;
+  return false;
+}
 
 }  // namespace wb

@@ -23,7 +23,6 @@ bool blockedItself(const Findings& f, const std::string& id) {
 // tests, the mistake may be that one's: the exercise is blocked by it, never wrong. (The grader
 // draws the other exercises with the reference, as the instructor edition's check does.)
 void blockWhereNoReference(const std::vector<ManifestEntry>& manifest, Findings& f) {
-  if (*variant::kSolutionDir) return;
   for (auto& [id, d] : f.first) {
     // (a scene that is wrong, or that timed out or crashed: a GLSL loop elsewhere slows every frame)
     const bool sceneFailed =
@@ -49,7 +48,6 @@ void blockWhereNoReference(const std::vector<ManifestEntry>& manifest, Findings&
 // error: the grader draws its scenes with the reference for the others, and gives it its points if
 // they match. It "passes its own tests", counts in the summary, and says what its scene waits on.
 void waitWhereNoReference(Findings& f) {
-  if (*variant::kSolutionDir) return;
   for (auto& [id, d] : f.first) {
     const auto by = f.blockers.find(id);
     if (d.verdict != "ERROR" || f.ownFailed.count(id) || f.unblocked.count(id) || by == f.blockers.end()) continue;
@@ -78,18 +76,10 @@ void markStops(const std::vector<ManifestEntry>& manifest, Findings& f) {
   }
 }
 
-// True when exercise `id`'s chunk of `text` still holds the stub's WB_TODO (not implemented yet).
-bool stillStub(const std::string& text, const std::string& id) {
-  if (findMarker(text, id) == std::string::npos) return false;
-  const auto [begin, end] = chunkRange(text, id);
-  return text.find("WB_TODO", begin) < end;
-}
-
 // Without the reference, a GLSL exercise's kernel runs the student's own code for the exercises it
 // calls: when one of those fails its own tests, this one's failure may be that one's. It is blocked
 // by it (no hint: a hint is proved with the reference's helpers), unless it is still the stub.
 void blockWhereUpstreamFails(const std::vector<ManifestEntry>& manifest, Findings& f) {
-  if (*variant::kSolutionDir) return;
   for (const auto& e : manifest) {
     auto d = f.first.find(e.id);
     if (e.file.rfind("shaders/", 0) != 0 || d == f.first.end() || !f.ownFailed.count(e.id)) continue;
@@ -100,7 +90,7 @@ void blockWhereUpstreamFails(const std::vector<ManifestEntry>& manifest, Finding
     } catch (const std::exception&) {
       continue;
     }
-    if (stillStub(text, e.id)) continue;
+    if (chunkIsStub(text, e.id)) continue;
     std::string by;
     for (const auto& other : glslExercisesCalled(text, e.id, manifest))
       if (f.ownFailed.count(other)) by += (by.empty() ? "" : ", ") + other;
@@ -138,9 +128,11 @@ std::vector<std::string> glslExercisesCalled(const std::string& text, const std:
 }
 
 void attribute(const std::vector<ManifestEntry>& manifest, Findings f) {
-  blockWhereUpstreamFails(manifest, f);
-  blockWhereNoReference(manifest, f);
-  waitWhereNoReference(f);
+  if (!*variant::kSolutionDir) {  // (with the reference, every exercise is judged on its own already)
+    blockWhereUpstreamFails(manifest, f);
+    blockWhereNoReference(manifest, f);
+    waitWhereNoReference(f);
+  }
   markStops(manifest, f);
 }
 

@@ -3,6 +3,7 @@
 /// grader classify: "NOT IMPLEMENTED" (a stub), "WRONG" (a bad answer), "ERROR" (it did not run).
 #pragma once
 #include "common/base/error.hpp"
+#include "common/exercise/glsl_harness.hpp"
 #include "common/platform/image.hpp"
 #include "tests/harness/tape.hpp"
 
@@ -78,17 +79,15 @@ class IsolatedShaders {
   }
 
 /// Runs a GLSL exercise kernel into `results`; a compile error or WB_TODO output ends the test.
-#define WB_RUN_GLSL(results, ...)                                         \
-  try {                                                                   \
-    results = ::wb::test::runExercise(__VA_ARGS__);                       \
-  } catch (const ::wb::test::SlowShader& e) {                             \
-    FAIL() << e.what();                                                   \
-  } catch (const std::exception& e) {                                     \
-    FAIL() << "ERROR: " << e.what();                                      \
-  }                                                                       \
-  for (const auto& r : results)                                           \
-    if (r.x <= -1e29f || r.y <= -1e29f || r.z <= -1e29f || r.w <= -1e29f) \
-      FAIL() << "NOT IMPLEMENTED: the GLSL function still returns WB_TODO";
+#define WB_RUN_GLSL(results, ...)                   \
+  try {                                             \
+    results = ::wb::test::runExercise(__VA_ARGS__); \
+  } catch (const ::wb::test::SlowShader& e) {       \
+    FAIL() << e.what();                             \
+  } catch (const std::exception& e) {               \
+    FAIL() << "ERROR: " << e.what();                \
+  }                                                 \
+  if (::wb::anyTodo(results)) FAIL() << "NOT IMPLEMENTED: the GLSL function still returns WB_TODO";
 
 /// Lab arguments for a scene test: `--set` for each "key=value", and `--scene scenes/<scene>` when given
 /// (a held-out scene, "hidden/NAME.json", is read from the instructor-only tests/hidden/<lab>/scenes).
