@@ -7,6 +7,7 @@ void installCrashReport() {}
 #else
 #include <dlfcn.h>
 #include <execinfo.h>
+#include <pthread.h>
 #include <unistd.h>
 
 #include <csignal>
@@ -24,6 +25,7 @@ char g_exe[4096];        // this executable's path, read at installation (not in
 bool g_pie = true;       // position independent: addresses are offsets from the load base
 void* g_base = nullptr;  // where this executable is loaded
 bool g_installed = false;
+pthread_t g_main;  // the thread that installed the report: the one running the exercises
 
 const char* signalName(int sig) {
   switch (sig) {
@@ -117,7 +119,9 @@ void printReport(int sig, FILE* symbols) {
     if (shown++ < 6) frames += "  at " + frame.where + " (" + frame.function + ")\n";
   }
   if (best.where.empty()) {
-    std::fprintf(stderr, "%s (%s); no source line found (a build without debug information?)\n",
+    std::fprintf(stderr,
+                 "%s (%s); no line of the lab's own code on the stack (it was inside a library, such as the GL "
+                 "driver, or the build has no debug information)\n",
                  sig == SIGTERM ? "timed out" : "crashed", signalName(sig));
     return;
   }
@@ -127,6 +131,13 @@ void printReport(int sig, FILE* symbols) {
 }
 
 void onCrash(int sig) {
+  // A stop from outside (the time limit's SIGTERM) goes to any thread, often one of the GL driver's
+  // own (Mesa's llvmpipe has several), whose stack holds no line of ours: hand it to the thread that
+  // runs the exercises, so that the report says where that one was.
+  if (sig == SIGTERM && !pthread_equal(pthread_self(), g_main)) {
+    pthread_kill(g_main, sig);
+    return;
+  }
   for (int s : kSignals) std::signal(s, SIG_DFL);  // a second fault ends the process at once
   void* frames[48];
   const int n = backtrace(frames, 48);
@@ -151,6 +162,7 @@ void installCrashReport() {
   Dl_info self{};
   if (!dladdr(reinterpret_cast<void*>(&installCrashReport), &self)) return;
   g_base = self.dli_fbase;
+  g_main = pthread_self();
   for (int s : kSignals) std::signal(s, onCrash);
   g_installed = true;
 }

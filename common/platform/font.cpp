@@ -9,6 +9,8 @@
 #define STB_TRUETYPE_IMPLEMENTATION
 #include <stb_truetype.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <vector>
 
@@ -62,6 +64,49 @@ std::u32string decodeUtf8(const std::string& text) {
     }
     out += ok ? cp : U'\uFFFD';
     i += ok ? size_t(extra) + 1 : 1;
+  }
+  return out;
+}
+
+TextBitmap rasterText(const fs::path& ttf, const std::string& text, float pixels) {
+  std::string data;
+  try {
+    data = readFile(ttf);
+  } catch (const Error&) {
+    return {};
+  }
+  const auto* bytes = reinterpret_cast<const unsigned char*>(data.data());
+  stbtt_fontinfo font;
+  if (ttf.empty() || !stbtt_InitFont(&font, bytes, stbtt_GetFontOffsetForIndex(bytes, 0))) return {};
+  const float scale = stbtt_ScaleForPixelHeight(&font, pixels);
+  int ascent = 0, descent = 0, gap = 0;
+  stbtt_GetFontVMetrics(&font, &ascent, &descent, &gap);
+  const std::u32string cps = decodeUtf8(text);
+  float width = 0;
+  for (char32_t c : cps) {
+    int advance = 0, bearing = 0;
+    stbtt_GetCodepointHMetrics(&font, int(c), &advance, &bearing);
+    width += float(advance) * scale;
+  }
+  TextBitmap out;
+  out.width = int(std::ceil(width)) + 1;
+  out.height = int(std::ceil(float(ascent - descent) * scale)) + 1;
+  out.a.assign(size_t(out.width) * size_t(out.height), 0);
+  float pen = 0;
+  const int baseline = int(std::round(float(ascent) * scale));
+  for (char32_t c : cps) {
+    int advance = 0, bearing = 0, w = 0, h = 0, xoff = 0, yoff = 0;
+    stbtt_GetCodepointHMetrics(&font, int(c), &advance, &bearing);
+    unsigned char* glyph = stbtt_GetCodepointBitmap(&font, scale, scale, int(c), &w, &h, &xoff, &yoff);
+    for (int j = 0; j < h; ++j)  // (clipped to the line, and kept where glyphs overlap)
+      for (int i = 0; i < w; ++i) {
+        const int x = int(std::round(pen)) + xoff + i, y = baseline + yoff + j;
+        if (x < 0 || y < 0 || x >= out.width || y >= out.height) continue;
+        uint8_t& a = out.a[size_t(y) * size_t(out.width) + size_t(x)];
+        a = std::max(a, glyph[j * w + i]);
+      }
+    stbtt_FreeBitmap(glyph, nullptr);
+    pen += float(advance) * scale;
   }
   return out;
 }

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace wb {
 
@@ -17,6 +18,15 @@ std::filesystem::path findFontFile();
 
 /// Decodes UTF-8 into code points; a malformed byte becomes U+FFFD.
 std::u32string decodeUtf8(const std::string& text);
+
+/// `text` as coverage (0..255, one byte a pixel), `pixels` tall, rasterised on the CPU with no GL
+/// context: for pictures written by tests and tools. Empty (width 0) when the font cannot be read.
+struct TextBitmap {
+  int width = 0;           ///< in pixels
+  int height = 0;          ///< in pixels (the font's line height)
+  std::vector<uint8_t> a;  ///< width * height coverage values, row by row from the top
+};
+TextBitmap rasterText(const std::filesystem::path& ttf, const std::string& text, float pixels);
 
 /// A signed-distance atlas of DejaVu Sans: printable ASCII, Latin-1 and the few symbols captions
 /// use. Glyph metrics are in em units (1 = the font's size in pixels).

@@ -4,11 +4,23 @@
 #include "common/platform/gl.hpp"
 #include "exercise.hpp"
 #include "tests/harness/harness.hpp"
+#include "tests/harness/picture.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 using wb::test::GlTest;
+
+namespace {
+// A vector's first three components as a student writes them: (0.707, 0.707, 0).
+std::string vec(const glm::vec4& v) {
+  std::ostringstream out;
+  out << std::setprecision(3) << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+  return out.str();
+}
+}  // namespace
 
 // --- 02.1: constant bias in the comparison ---------------------------------------------------------
 TEST_F(GlTest, Ex02_1_BiasedCompareMatchesReference) {
@@ -47,9 +59,17 @@ TEST_F(GlTest, Ex02_2_SlopeScaledBiasGrowsWithTheAngleAndIsClamped) {
       }
   std::vector<glm::vec4> got;
   WB_RUN_GLSL(got, "02.2", "result.x = slopeScaledBias(IN(0).x, IN(0).y, IN(0).z, IN(0).w);", int(want.size()), 1, in);
+  auto fails = [&](size_t i) {
+    return !(std::abs(got[i].x - want[i]) <= 1e-5 + 1e-3 * want[i]);
+  };  // (GLSL tan is not exact)
+  const std::string plot = wb::test::plotFirstFailingSeries(
+      "Ex02_2_bias_against_cos", "02.2: slope-scaled bias against cos \u03B8 (one scale and max)", "cos \u03B8", "bias",
+      {want.size(), [&](size_t i) { return double(in[i].x); }, [&](size_t i) { return double(got[i].x); },
+       [&](size_t i) { return want[i]; }, fails,
+       [&](size_t i, size_t k) { return in[i].z == in[k].z && in[i].w == in[k].w; }});
   for (size_t i = 0; i < want.size(); ++i)
-    ASSERT_NEAR(got[i].x, want[i], 1e-5 + 1e-3 * want[i])  // GLSL sqrt/tan/acos are not exact
-        << "WRONG: cosTheta " << in[i].x << ", constant 0.001, scale " << in[i].z << ", max " << in[i].w;
+    ASSERT_NEAR(got[i].x, want[i], 1e-5 + 1e-3 * want[i])
+        << "WRONG: cosTheta " << in[i].x << ", constant 0.001, scale " << in[i].z << ", max " << in[i].w << plot;
 }
 
 // --- 02.3: rasterizer bias -------------------------------------------------------------------------
@@ -115,7 +135,11 @@ TEST_F(GlTest, Ex02_4_CullForDepthPassCullsTheLitFaces) {
   const bool on = first.x != 0, off = second.x == 0;
   const GLint mode = GLint(first.y);
   EXPECT_TRUE(on) << "WRONG: culling is not enabled";
-  EXPECT_EQ(mode, GL_FRONT) << "WRONG: the depth pass must cull the faces turned to the light (GL_FRONT)";
+  EXPECT_EQ(mode, GL_FRONT) << "WRONG: the depth pass must cull the faces turned to the light (GL_FRONT); it culls "
+                            << (mode == GL_BACK             ? "GL_BACK"
+                                : mode == GL_FRONT_AND_BACK ? "GL_FRONT_AND_BACK"
+                                                            : "?")
+                            << " (GL_FRONT is " << GL_FRONT << ", GL_BACK " << GL_BACK << ")";
   EXPECT_TRUE(off) << "WRONG: cullForDepthPass(false) must turn culling off";
 }
 
@@ -143,8 +167,10 @@ TEST_F(GlTest, Ex02_5_NormalOffsetMovesAlongTheNormal) {
               int(want.size()), 3, in);
   for (size_t i = 0; i < want.size(); ++i)
     for (int a = 0; a < 3; ++a)
-      ASSERT_NEAR(got[i][a], want[i][a], 1e-5) << "WRONG: case " << i << ", coordinate "
-                                               << "xyz"[a];
+      ASSERT_NEAR(got[i][a], want[i][a], 1e-5)
+          << "WRONG: normalOffsetPosition(worldPos (1.5, -0.5, 2), normal " << vec(in[3 * i + 1]) << ", toLight "
+          << vec(in[3 * i + 2]) << ", texelWorld 0.02, scale " << in[3 * i].w << "), coordinate "
+          << "xyz"[a];
 }
 
 // --- 02.6: receiver-plane depth bias ---------------------------------------------------------------
@@ -167,8 +193,9 @@ TEST_F(GlTest, Ex02_6_ReceiverPlaneRecoversTheDepthGradient) {
   for (size_t i = 0; i < want.size(); ++i)
     for (int a = 0; a < 2; ++a)
       ASSERT_NEAR(got[i][a], want[i][a], 2e-3 * (1 + std::abs(want[i][a])))
-          << "WRONG: dz/d"
-          << "uv"[a] << " of case " << i << " should be " << want[i][a];
+          << "WRONG: receiverPlaneDepthBias(dCoordDx " << vec(in[2 * i]) << ", dCoordDy " << vec(in[2 * i + 1])
+          << "): dz/d"
+          << "uv"[a] << " should be " << want[i][a];
 }
 
 // Reference: z + offset . dzduv - |dzduv| . texel.
@@ -178,13 +205,17 @@ TEST_F(GlTest, Ex02_6_ReceiverPlaneTapDepth) {
   for (glm::vec2 g : {glm::vec2(0.5f, -0.25f), glm::vec2(0, 0), glm::vec2(-2, 1)})
     for (glm::vec2 off : {glm::vec2(0, 0), glm::vec2(0.002f, -0.001f), glm::vec2(-0.004f, 0.003f)}) {
       in.emplace_back(0.6f, g.x, g.y, 0);
-      in.emplace_back(off, 1.0f / 512, 1.0f / 512);
-      want.push_back(0.6 + off.x * g.x + off.y * g.y - (std::abs(g.x) + std::abs(g.y)) / 512.0);
+      // (a coarse map, 64 texels: an allowance taken without abs() is then far from none at all)
+      in.emplace_back(off, 1.0f / 64, 1.0f / 64);
+      want.push_back(0.6 + off.x * g.x + off.y * g.y - (std::abs(g.x) + std::abs(g.y)) / 64.0);
     }
   std::vector<glm::vec4> got;
   WB_RUN_GLSL(got, "02.6", "result.x = receiverPlaneTapDepth(IN(0).x, IN(0).yz, IN(1).xy, IN(1).zw);", int(want.size()),
               2, in);
-  for (size_t i = 0; i < want.size(); ++i) ASSERT_NEAR(got[i].x, want[i], 1e-6) << "WRONG: case " << i;
+  for (size_t i = 0; i < want.size(); ++i)
+    ASSERT_NEAR(got[i].x, want[i], 1e-6) << "WRONG: receiverPlaneTapDepth(receiverDepth 0.6, dzduv (" << in[2 * i].y
+                                         << ", " << in[2 * i].z << "), tapOffset (" << in[2 * i + 1].x << ", "
+                                         << in[2 * i + 1].y << "), texelSize (1/64, 1/64))";
 }
 
 // --- Layer 2: the bias scenes against golden visibility -------------------------------------------

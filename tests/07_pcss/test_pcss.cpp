@@ -5,6 +5,7 @@
 #include "common/platform/gl.hpp"
 #include "common/platform/texture_io.hpp"
 #include "tests/harness/harness.hpp"
+#include "tests/harness/picture.hpp"
 
 #include <cmath>
 #include <functional>
@@ -95,15 +96,29 @@ TEST_F(GlTest, Ex07_1_SearchRegionShrinksTowardsTheNearPlane) {
 // Similar triangles: a blocker at zB between a light of width L and a receiver at zR leaves a
 // penumbra (zR - zB) / zB * L wide: 0 at contact, L where the blocker is halfway.
 TEST_F(GlTest, Ex07_3_PenumbraFromSimilarTriangles) {
-  const std::vector<glm::vec4> in = {
-      {4, 2, 0.2f, 0}, {4, 4, 0.2f, 0}, {6, 4.6f, 0.8f, 0}, {9, 3, 1, 0}, {5, 4.5f, 0.3f, 0}};
-  const std::vector<double> want = {0.2, 0, 0.8 * 1.4 / 4.6, 2, 0.3 * 0.5 / 4.5};
+  std::vector<glm::vec4> in = {{4, 2, 0.2f, 0}, {4, 4, 0.2f, 0}, {6, 4.6f, 0.8f, 0}, {9, 3, 1, 0}, {5, 4.5f, 0.3f, 0}};
+  std::vector<double> want = {0.2, 0, 0.8 * 1.4 / 4.6, 2, 0.3 * 0.5 / 4.5};
+  // Then a sweep of the blocker from the light to the receiver (at 8, a light 0.5 wide), for the plot.
+  for (float zBlocker : {1.0f, 1.5f, 2.0f, 3.0f, 4.0f, 5.0f, 6.0f, 7.0f, 8.0f}) {
+    in.emplace_back(8, zBlocker, 0.5f, 0);
+    want.push_back(0.5 * (8.0 - double(zBlocker)) / double(zBlocker));
+  }
   std::vector<glm::vec4> got;
   WB_RUN_GLSL(got, "07.3", "result.x = pcssPenumbraWidth(IN(0).x, IN(0).y, IN(0).z);", int(in.size()), 1, in);
+  auto fails = [&](size_t k) { return !(std::abs(got[k].x - want[k]) <= 1e-5 * std::max(1.0, want[k])); };
+  const std::string plot = wb::test::plotSweep("Ex07_3_penumbra_against_blocker",
+                                               "07.3: penumbra width against the blocker's distance (receiver at 8, "
+                                               "light 0.5 wide)",
+                                               "blocker's distance from the light", "penumbra width", [&] {
+                                                 std::vector<wb::test::SweepPoint> sweep;
+                                                 for (size_t k = 5; k < in.size(); ++k)
+                                                   sweep.push_back({in[k].y, got[k].x, want[k], fails(k)});
+                                                 return sweep;
+                                               }());
   for (size_t k = 0; k < in.size(); ++k)
     ASSERT_NEAR(got[k].x, want[k], 1e-5 * std::max(1.0, want[k]))
         << std::setprecision(4) << "WRONG: pcssPenumbraWidth(zReceiver " << in[k].x << ", zBlocker " << in[k].y
-        << ", lightSize " << in[k].z << ")";
+        << ", lightSize " << in[k].z << ")" << plot;
 }
 
 // --- 07.2: the blocker search -----------------------------------------------------------------------

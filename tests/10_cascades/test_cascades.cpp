@@ -4,6 +4,7 @@
 #include "common/platform/image.hpp"
 #include "exercise.hpp"
 #include "tests/harness/harness.hpp"
+#include "tests/harness/picture.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -49,6 +50,36 @@ TEST(Lab10, Ex10_1_SplitsByHand) {
       EXPECT_NEAR(got[i], c.want[i], 1e-5 * c.want[i])
           << "WRONG: " << c.what << ", C_" << i << " (near " << c.nearPlane << ", far " << c.farPlane << ")";
   }
+}
+
+// The practical scheme swept over lambda (near 1, far 100): C_i = lambda C_log + (1 - lambda) C_uni,
+// shown as a plot of the split that fails first.
+TEST(Lab10, Ex10_1_PracticalSplitsAgainstLambda) {
+  struct Case {
+    double lambda, want;
+    float got;
+    int split;
+  };
+  std::vector<Case> cases;
+  for (double lambda : {0.0, 0.125, 0.25, 0.5, 0.75, 0.875, 1.0}) {
+    std::vector<float> got;
+    WB_TRY_EXERCISE(got = WB_CALL(lab10::splitDistances(1, 100, 4, lab10::SplitScheme::Practical, float(lambda))));
+    ASSERT_EQ(got.size(), 5u) << "WRONG: lambda " << lambda << ": four cascades have five split distances";
+    for (int i = 1; i < 4; ++i)
+      cases.push_back(
+          {lambda, lambda * std::pow(100.0, i / 4.0) + (1 - lambda) * (1 + 99.0 * i / 4), got[size_t(i)], i});
+  }
+  auto fails = [&](size_t k) { return !(std::abs(cases[k].got - cases[k].want) <= 1e-5 * cases[k].want); };
+  const std::string plot = wb::test::plotFirstFailingSeries(
+      "Ex10_1_split_against_lambda", "10.1: a practical split distance against \u03BB (near 1, far 100)", "\u03BB",
+      "split distance C_i",
+      {cases.size(), [&](size_t k) { return cases[k].lambda; }, [&](size_t k) { return double(cases[k].got); },
+       [&](size_t k) { return cases[k].want; }, fails,
+       [&](size_t i, size_t k) { return cases[i].split == cases[k].split; }});
+  for (size_t k = 0; k < cases.size(); ++k)
+    ASSERT_NEAR(cases[k].got, cases[k].want, 1e-5 * cases[k].want)
+        << "WRONG: practical splits, lambda " << cases[k].lambda << ", C_" << cases[k].split << " (near 1, far 100)"
+        << plot;
 }
 
 // --- 10.2: slice corners -----------------------------------------------------------------------------

@@ -16,15 +16,20 @@
 #include "common/truth/ground_truth.hpp"
 #include "tests/harness/harness.hpp"
 
+#include <pthread.h>
 #include <sys/wait.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <regex>
 #include <sstream>
+#include <thread>
 
 namespace fs = std::filesystem;
 
@@ -682,4 +687,27 @@ static void crashHere() {
 
 TEST(CrashReport, NamesTheSignalAndTheLine) {
   EXPECT_DEATH(crashHere(), "crashed \\(SIGSEGV: a bad memory access.*framework_test.cpp:[0-9]+");
+}
+
+// A stop from outside (the time limit's SIGTERM) that lands on another thread (Mesa's llvmpipe has
+// several) still names the line where the main thread was, not "no source line found".
+static std::atomic<bool> g_looping{false};
+[[gnu::noinline]] static void loopHere() {
+  g_looping = true;
+  for (volatile int spin = 0;; spin = spin + 1) {
+  }
+}
+static void stoppedOnAnotherThread() {
+  wb::installCrashReport();
+  std::thread other([] {
+    while (!g_looping) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    pthread_kill(pthread_self(), SIGTERM);  // as if the kernel chose this thread
+  });
+  other.detach();
+  loopHere();
+}
+
+TEST(CrashReport, AStopOnAnotherThreadNamesTheMainThreadsLine) {
+  EXPECT_EXIT(stoppedOnAnotherThread(), ::testing::KilledBySignal(SIGTERM),
+              "timed out \\(stopped at its time limit.*framework_test.cpp:[0-9]+ \\(loopHere");
 }

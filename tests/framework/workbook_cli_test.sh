@@ -3,7 +3,7 @@
 # cmake builds nothing and a fake build/lab03 prints the arguments it was given. Holds:
 #   - `run 3` is lab 03, and without a display it renders headlessly to build/renders/lab03.png;
 #   - `run 03 --help` passes --help alone, and says nothing about rendering headlessly;
-#   - a malformed or unknown lab number gets one line and exit code 2;
+#   - a malformed or unknown lab number gets one line and exit code 2, and so does an unknown option of check;
 #   - `docs` works in a tree without build/, Doxygen warns about nothing, and its main page is the
 #     README with links to the handouts (skipped without doxygen).
 # Usage: workbook_cli_test.sh SCRATCH_DIR
@@ -59,6 +59,9 @@ wb run 42
   fail "run 42 did not name the labs there are (exit $code): $out"
 wb run
 [ "$code" = 2 ] && grep -q "usage: ./workbook run NN" <<<"$out" || fail "run without a number (exit $code): $out"
+wb check 03 --htm
+[ "$code" = 2 ] && grep -q "check: unknown option '--htm' (usage: ./workbook check NN \[--watch\] \[--html\])" <<<"$out" ||
+  fail "check with an unknown option (exit $code): $out"
 
 if command -v doxygen >/dev/null; then
   rm -rf "$tree/build"

@@ -42,6 +42,20 @@ std::string num(const std::string& text) {
   return out;
 }
 
+// Numbers in our own messages as a student would write them: gtest prints a float it is given with
+// 17 digits ("0.20000000298023224"), which we shorten to 6 significant ones ("0.2").
+std::string shortNumbers(const std::string& text) {
+  static const std::regex longNumber(R"(-?\d+\.\d{8,}(?:[eE][-+]?\d+)?)");
+  std::string out;
+  auto at = text.cbegin();
+  for (std::sregex_iterator m(text.begin(), text.end(), longNumber), end; m != end; ++m) {
+    out.append(at, (*m)[0].first);
+    out += num((*m)[0].str());
+    at = (*m)[0].second;
+  }
+  return out.append(at, text.cend());
+}
+
 // gtest's own account of a failed comparison, as "got X, want Y" with the tolerance.
 // A printed value as a number: true and false as 1 and 0 (strtod reads both as 0, which made a
 // "got true" look like a recorded "got false"), nothing for a value that is not a number.
@@ -117,7 +131,7 @@ Diagnosis diagnose(const std::string& test, const std::string& message) {
   Diagnosis d;
   size_t at = std::string::npos;
   for (const char* k : {"NOT IMPLEMENTED", "WRONG", "ERROR"}) at = std::min(at, message.find(k));
-  const std::string ours = shortPaths(at == std::string::npos ? "WRONG: " + message : message.substr(at));
+  const std::string ours = shortNumbers(shortPaths(at == std::string::npos ? "WRONG: " + message : message.substr(at)));
   const std::string gtest = at == std::string::npos ? message : message.substr(0, at);
   d.verdict = ours.rfind("ERROR", 0) == 0             ? "ERROR"
               : ours.rfind("NOT IMPLEMENTED", 0) == 0 ? "NOT IMPLEMENTED"
@@ -143,9 +157,9 @@ Diagnosis diagnose(const std::string& test, const std::string& message) {
         d.details.push_back(hint.rfind("one of these:", 0) == 0 ? "looks like a known mistake, " + hint
                                                                 : "looks like a known mistake: " + hint);
   }
-  for (const auto& l : lines)
-    if (const auto at = l.find("diff: "); at != std::string::npos && l.find_first_not_of(' ') == at)
-      d.details.push_back("diff image: " + l.substr(at + 6));
+  for (const auto& l : lines)  // the pictures a failing test left (tests/harness/picture.hpp)
+    if (const auto at = l.find("picture: "); at != std::string::npos && l.find_first_not_of(' ') == at)
+      d.details.push_back(l.substr(at));
   return d;
 }
 

@@ -18,6 +18,7 @@
 #include "common/exercise/crash_report.hpp"
 #include "common/exercise/glsl_harness.hpp"
 #include "tests/harness/attribution.hpp"
+#include "tests/harness/check_page.hpp"
 #include "tests/harness/diagnosis.hpp"
 #include "tests/harness/harness.hpp"
 
@@ -58,6 +59,23 @@ std::string exerciseOf(const std::string& testName) {
 
 // A line of a diagnosis that names a known mistake (diagnosis.cpp).
 bool namesKnownMistake(const std::string& line) { return line.rfind("looks like a known mistake", 0) == 0; }
+
+// One test's value can fit several known mistakes ("one of these: - A - B"), and another test's only
+// one of them ("A"): the second narrows the first, which is then left out, so that no hint is shown twice.
+void narrowHints(std::vector<std::string>& details) {
+  const std::string one = "looks like a known mistake: ", several = "looks like a known mistake, one of these:";
+  std::vector<std::string> named;
+  for (const auto& line : details)
+    if (line.rfind(one, 0) == 0) named.push_back(line.substr(one.size()));
+  details.erase(std::remove_if(details.begin(), details.end(),
+                               [&](const std::string& line) {
+                                 return line.rfind(several, 0) == 0 &&
+                                        std::any_of(named.begin(), named.end(), [&](const std::string& n) {
+                                          return line.find("- " + n) != std::string::npos;
+                                        });
+                               }),
+                details.end());
+}
 
 // Where exercise `e` starts in the file being judged ("labs/02_bias/shaders/exercise.glsl:16"): the
 // line of its marker, so that a WRONG verdict says where to look; "" when the file has none.
@@ -114,9 +132,10 @@ class CheckListener : public ::testing::EmptyTestEventListener {
       if (others_.empty() || others_.back().first != test_) others_.emplace_back(test_, std::move(d));
       return;
     }
-    // A known mistake recognised by any of the exercise's tests is named, whichever test's failure is shown.
+    // A known mistake recognised by any of the exercise's tests is named, and a picture any of them left
+    // is shown, whichever test's failure is shown.
     for (const auto& line : d.details)
-      if (namesKnownMistake(line) &&
+      if ((namesKnownMistake(line) || line.rfind("picture: ", 0) == 0) &&
           std::find(hints_[current_].begin(), hints_[current_].end(), line) == hints_[current_].end())
         hints_[current_].push_back(line);
     auto& slot = first_[current_];
@@ -130,6 +149,7 @@ class CheckListener : public ::testing::EmptyTestEventListener {
         if (auto& d = first_[id];
             d.verdict == "WRONG" && std::find(d.details.begin(), d.details.end(), line) == d.details.end())
           d.details.push_back(line);
+    for (auto& [id, d] : first_) narrowHints(d.details);
     if (wb::test::tapeMode() == wb::test::TapeMode::Replay)
       std::printf("\nLab %s: judged from what your build produced (%s)\n", wb::variant::kLab,
                   wb::test::tapeDir().string().c_str());
@@ -137,6 +157,7 @@ class CheckListener : public ::testing::EmptyTestEventListener {
       std::printf("\nLab %s: %s build\n", wb::variant::kLab, wb::variant::kName);
     std::printf("  %-5s %-16s %s\n", "ID", "status", "exercise (then what was found)");
     int done = 0, waiting = 0;
+    std::vector<wb::test::PageRow> page;                 // WB_CHECK_HTML: the same table as a page (check --html)
     nlohmann::json verdicts = nlohmann::json::object();  // WB_CHECK_JSON: for the app's live checks
     for (const auto& e : manifest) {
       const wb::test::Diagnosis d = first_.count(e.id) ? first_[e.id] : wb::test::Diagnosis{};
@@ -153,9 +174,9 @@ class CheckListener : public ::testing::EmptyTestEventListener {
       if (ran_.count(e.id)) verdicts[e.id] = {{"status", status}, {"headline", d.headline}};
       if (!d.headline.empty()) std::printf("        %s\n", d.headline.c_str());
       for (const auto& line : d.details) std::printf("          %s\n", line.c_str());
-      if (d.verdict == "WRONG")
-        if (const std::string where = exerciseLine(e); !where.empty())
-          std::printf("          your code: %s\n", where.c_str());
+      const std::string where = d.verdict == "WRONG" ? exerciseLine(e) : "";
+      if (!where.empty()) std::printf("          your code: %s\n", where.c_str());
+      page.push_back({e.id, status, e.title, d.headline, d.details, where});
     }
     for (const auto& [test, d] : others_) {  // they fail the whole check: say so, and why
       std::printf("  also failing, for the lab as a whole: %s\n        %s\n", test.c_str(), d.headline.c_str());
@@ -175,6 +196,12 @@ class CheckListener : public ::testing::EmptyTestEventListener {
                 expectStubs_ ? (exitCode ? " Some stubs are not reported as NOT IMPLEMENTED."
                                          : " Every stub reports NOT IMPLEMENTED.")
                              : "");
+    if (const char* file = std::getenv("WB_CHECK_HTML"); file && *file) {
+      const std::string summary =
+          std::to_string(done) + " of " + std::to_string(manifest.size()) + " exercises pass their tests" + waits + ".";
+      if (!wb::test::writeCheckPage(file, "Lab " + std::string(wb::variant::kLab) + ": check", page, summary))
+        std::printf("  (the page %s could not be written)\n", file);
+    }
   }
 
  private:

@@ -12,8 +12,8 @@ and costs the exercises it was building; whatever else goes wrong with one submi
 of the grader) is recorded in its results, never stops a batch.
 
 Outputs per submission (in --out): results.json (Gradescope, rewritten after every exercise so a
-crash mid-way leaves a valid file), junit.xml, report.md and report.html with the reference, result
-and diff images of failed scene tests. With --batch: one such folder per student, gradebook.csv and
+crash mid-way leaves a valid file), junit.xml, report.md and report.html with the pictures of failed
+tests (a scene's reference, result and difference; a sweep's plot). With --batch: one such folder per student, gradebook.csv and
 summary.md.
 """
 import sys

@@ -426,11 +426,12 @@ def left_as_stub(outcome, mine, stub, ex_id):
 def copy_images(failures, images, tag):
     kept = []
     for test, msg in failures:
-        for label, path in re.findall(r"(diff|reference|result): (\S+\.png)", msg):
+        for label, path in re.findall(r"(picture|diff|reference|result): (\S+\.png)", msg):
             src = Path(path)
             if src.exists():
                 images.mkdir(parents=True, exist_ok=True)
-                dest = images / f"{tag}_{src.parent.name}_{label}.png"
+                name = src.stem if label == "picture" else label  # (a sweep's plot is named by its test)
+                dest = images / f"{tag}_{src.parent.name}_{name}.png"
                 shutil.copyfile(src, dest)
                 kept.append((test, label, dest.name))
     return kept

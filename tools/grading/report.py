@@ -218,7 +218,7 @@ class Results:
                     body.append(f"<p><code>{html.escape(test)}</code></p><pre>{html.escape(msg.strip()[:3000])}</pre>")
                 for test, label, img in x["images"]:
                     md.append(f"![{label}](images/{img})")
-                    body.append(f"<figure style='display:inline-block'><img src='images/{img}' width=256>"
+                    body.append(f"<figure style='display:inline-block'><img src='images/{img}' style='max-width:100%'>"
                                 f"<figcaption>{label}</figcaption></figure>")
         (self.out / "report.md").write_text("\n".join(md) + "\n")
         (self.out / "report.html").write_text("<!doctype html><meta charset=utf-8><title>Grading report</title>"

@@ -15,6 +15,7 @@ memory, processes, file size and CPU time. A limit hit is named in the student's
 import itertools
 import os
 import re
+import selectors
 import shutil
 import signal
 import stat
@@ -45,6 +46,8 @@ def describe_limit(code, out, cpu_seconds):
     sig = -code if code < 0 else code - 128 if code > 128 else 0
     if sig == signal.SIGXCPU:
         return f"used more than {cpu_seconds} s of CPU time (the sandbox's limit): an endless loop?"
+    if FLOODED.format(mb=OUTPUT_CAP >> 20) in out:
+        return FLOODED.format(mb=OUTPUT_CAP >> 20)
     if sig == signal.SIGXFSZ:
         return f"wrote a file larger than {LIMITS['file_size'] // GIB} GiB (the sandbox's limit)"
     if RUN_OOM in out:
@@ -197,19 +200,61 @@ class Sandbox:
             raise SystemExit(f"grade: could not {what}:\n{out[-4000:]}")
 
 
+# What a run may print: a real test run prints a few MB at most, so a run past OUTPUT_CAP (a print
+# in a loop) is stopped; of its output the grader keeps the first and last KEEP bytes, so that no
+# student process can make the grader itself run out of memory (it buffered everything before).
+OUTPUT_CAP = int(os.environ.get("WB_GRADE_OUTPUT_MB") or 64) << 20
+KEEP = 512 << 10
+FLOODED = "wrote more than {mb} MB of output (a print in a loop?) and was stopped"
+
+
 def run_killable(cmd, timeout, cwd=None, env=None):
     """Runs cmd in its own session: (exit code or -signal, output, timed_out). On time-out the whole
     session is killed (a test binary and any lab it started; a build's make and compilers), which
-    subprocess.run(timeout=...) would not do: it kills only its child and leaves the rest running."""
+    subprocess.run(timeout=...) would not do: it kills only its child and leaves the rest running.
+    Its output is read as it comes and bounded (OUTPUT_CAP, KEEP); where some was left out, the
+    output says so, and a run past the cap is stopped and ends with FLOODED."""
     proc = subprocess.Popen(cmd, cwd=cwd, env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, start_new_session=True)
-    try:
-        out, _ = proc.communicate(timeout=timeout)
-        return proc.returncode, out.decode(errors="replace"), False
-    except subprocess.TimeoutExpired:
+    deadline = time.monotonic() + timeout
+    head, tail, total, timed_out, flooded = bytearray(), bytearray(), 0, False, False
+    fd = proc.stdout.fileno()
+    with selectors.DefaultSelector() as sel:
+        sel.register(fd, selectors.EVENT_READ)
+        while True:
+            left = deadline - time.monotonic()
+            if left <= 0:
+                timed_out = True
+                break
+            if not sel.select(min(left, 1.0)):
+                continue
+            chunk = os.read(fd, 1 << 16)
+            if not chunk:  # every writer is gone
+                break
+            total += len(chunk)
+            room = KEEP - len(head)
+            head += chunk[:room]
+            tail = (tail + chunk[room:])[-KEEP:] if len(chunk) > room else tail
+            if total > OUTPUT_CAP:
+                flooded = True
+                break
+    if not (timed_out or flooded):
+        try:
+            proc.wait(timeout=max(0.1, deadline - time.monotonic()))
+        except subprocess.TimeoutExpired:  # (it closed its output and went on)
+            timed_out = True
+    if timed_out or flooded:
         kill_session(proc.pid)  # timeout(1) makes its own process group, hence the session
-        out, _ = proc.communicate()
-        return -signal.SIGKILL, out.decode(errors="replace"), True
+    proc.wait()
+    proc.stdout.close()
+    cut = total - len(head) - len(tail)
+    out = head.decode(errors="replace")
+    if cut > 0:
+        out += f"\n[grader: cut here: {cut} bytes of output left out]\n"
+    out += tail.decode(errors="replace")
+    if flooded:
+        out += f"\n[grader: the run {FLOODED.format(mb=OUTPUT_CAP >> 20)}]\n"
+    return (-signal.SIGKILL if timed_out or flooded else proc.returncode), out, timed_out
 
 
 def kill_session(sid):

@@ -1,0 +1,185 @@
+#!/usr/bin/python3
+"""The mutant matrix in the student edition: every mutant (tests/mutants/NN_name/*.mutant, a solution
+with one mistake) handed in to `./workbook check NN` of an exported edition, as a student who got one
+thing wrong would run it. There the judge is the student's own build and every scene is drawn with the
+student's own shaders, so this is where a mistake could spill into other exercises.
+
+Usage: tools/authoring/student_matrix.py EXPORT [--labs 02,07] [--only NAME,NAME] [--prepare] [--log FILE]
+  EXPORT     a folder written by ./workbook export-student.
+  --prepare  first copies the solutions into EXPORT/labs (a student with every exercise right) and
+             builds it; without it, EXPORT must hold them already. Each lab is checked unmutated
+             first: it must pass whole, or its mutants would prove nothing.
+  --log FILE every mutant's check output, one after another.
+
+Per mutant it reads check's table: caught (the mutant's exercise is "wrong"), attributed (no other
+exercise "wrong" or "error"), the hint (its recorded one from tests/hints, or none where none is
+recorded), and the summary's count, which must be what the grader gives the same files: every exercise
+but the mutant's (the grader draws each exercise's scenes with the reference for the others). The
+files are put back after each mutant, also when the run is stopped.
+"""
+import json
+import re
+import shutil
+import subprocess
+import sys
+import time
+from collections import defaultdict
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "tools" / "authoring"))
+from make_hints import fields_of  # noqa: E402  (one reader of .mutant files)
+
+STATUS = re.compile(r"^  (\d\d\.[0-9x])\s+(passes its tests|passes own tests|not implemented|error|wrong)\s")
+SUMMARY = re.compile(r"^  (\d+) of (\d+) exercises pass their tests", re.M)
+
+
+def recorded_hint(mutant):
+    hints = ROOT / "tests/hints" / f"{mutant.parent.name}.json"
+    if not hints.exists():
+        return ""
+    return next((h["hint"] for h in json.loads(hints.read_text())["hints"] if h["mutant"] == mutant.stem), "")
+
+
+def check(export, nn, timeout=600):
+    """./workbook check NN in EXPORT: (its output, seconds)."""
+    start = time.monotonic()
+    try:
+        run = subprocess.run(["./workbook", "check", nn], cwd=export, capture_output=True, text=True, timeout=timeout)
+        out = run.stdout + run.stderr
+    except subprocess.TimeoutExpired as e:
+        out = (e.stdout or b"").decode(errors="replace") + f"\n[student_matrix: check ran past {timeout} s]"
+    return out, time.monotonic() - start
+
+
+def table(out):
+    """{id: (status, [lines below it])} and the summary (passing, total) from check's output."""
+    rows, current = {}, None
+    for line in out.splitlines():
+        m = STATUS.match(line)
+        if m:
+            current = m.group(1)
+            rows[current] = (m.group(2), [])
+        elif current and line.startswith("        "):
+            rows[current][1].append(line.strip())
+        else:
+            current = None
+    s = SUMMARY.search(out)
+    return rows, ((int(s.group(1)), int(s.group(2))) if s else None)
+
+
+def judge(mutant, out):
+    """One mutant's row: caught, attributed, hint (right / none / WRONG / MISSING), score right."""
+    exercise = fields_of(mutant)[0]["exercise"]
+    rows, summary = table(out)
+    status, lines = rows.get(exercise, ("missing", []))
+    others = {i: s for i, (s, _) in rows.items() if i != exercise and s in ("wrong", "error")}
+    shown = [line.split(":", 1)[1].strip() for line in lines if line.startswith("looks like a known mistake")]
+    want = recorded_hint(mutant)
+    if want:
+        hint = "right" if shown and all(want in s or s in want for s in shown) else ("WRONG" if shown else "MISSING")
+    else:
+        hint = "WRONG" if shown else "none"
+    score = summary is not None and summary[0] == summary[1] - 1
+    return {"caught": status == "wrong", "attributed": status == "wrong" and not others, "hint": hint,
+            "score": score, "status": status, "others": others, "shown": shown, "summary": summary}
+
+
+def replacements(mutant):
+    """Every (find, replace) pair of a mutant, in order (a mistake may change several lines)."""
+    pairs, find = [], None
+    for line in mutant.read_text().splitlines():
+        key, _, value = line.partition(":")
+        if key == "find":
+            find = value.strip()
+        elif key == "replace" and find is not None:
+            pairs.append((find, value.strip()))
+            find = None
+    return pairs
+
+
+def mutate(export, mutant):
+    """Applies the mutant to EXPORT/labs/NN/FILE; returns (path, original text)."""
+    fields, _ = fields_of(mutant)
+    path = export / "labs" / mutant.parent.name / fields["file"]
+    original = text = path.read_text()
+    for find, replace in replacements(mutant):
+        if text.count(find) != 1:
+            raise SystemExit(f"{mutant}: '{find}' is not in {path} exactly once (is EXPORT filled with the solutions?)")
+        text = text.replace(find, replace)
+    path.write_text(text)
+    return path, original
+
+
+def prepare(export):
+    for lab in sorted((ROOT / "solutions").glob("[0-9][0-9]_*")):
+        shutil.copytree(lab, export / "labs" / lab.name, dirs_exist_ok=True)
+    subprocess.run(["./workbook", "build"], cwd=export, check=True, stdout=subprocess.DEVNULL)
+
+
+def print_table(per_lab, rows):
+    for name, r in rows:
+        if not (r["caught"] and r["attributed"] and r["hint"] in ("right", "none") and r["score"]):
+            print(f"  {name}: {r['status']}; others {r['others'] or 'none'}; hint {r['hint']} {r['shown']};"
+                  f" summary {r['summary']}")
+    print("\n| lab | mutants | caught | attributed | score = grader's | own hint | no hint (none recorded)"
+          " | wrong hints | hints missing | median check (s) |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    total = defaultdict(int)
+    for lab, t in sorted(per_lab.items()):
+        times = sorted(t.pop("times"))
+        cells = [t[k] for k in ("mutants", "caught", "attributed", "score", "right", "none", "WRONG", "MISSING")]
+        print(f"| {lab} | " + " | ".join(map(str, cells)) + f" | {times[len(times) // 2]:.0f} |")
+        for k, v in t.items():
+            total[k] += v
+    print("| all | " + " | ".join(str(total[k]) for k in
+          ("mutants", "caught", "attributed", "score", "right", "none", "WRONG", "MISSING")) + " | |")
+    return total
+
+
+def main():
+    argv = sys.argv[1:]
+    if not argv or argv[0].startswith("-"):
+        sys.exit(__doc__)
+    export = Path(argv[0]).resolve()
+    if (export / "solutions").exists() or not (export / "workbook").exists():
+        sys.exit(f"{export}: not a student edition (./workbook export-student DIR writes one)")
+    labs = argv[argv.index("--labs") + 1].split(",") if "--labs" in argv else []
+    only = argv[argv.index("--only") + 1].split(",") if "--only" in argv else []
+    log = open(argv[argv.index("--log") + 1], "w") if "--log" in argv else None
+    if "--prepare" in argv:
+        prepare(export)
+    mutants = [m for m in sorted((ROOT / "tests/mutants").glob("*/*.mutant"))
+               if (not labs or m.parent.name[:2] in labs) and (not only or m.stem in only)]
+    per_lab, rows = defaultdict(lambda: defaultdict(int, times=[])), []
+    for nn in sorted({m.parent.name[:2] for m in mutants}):
+        out, _ = check(export, nn)
+        summary = table(out)[1]
+        if not summary or summary[0] != summary[1]:
+            print(out)
+            sys.exit(f"lab {nn}: the unmutated solutions do not pass check in {export} ({summary})")
+    for mutant in mutants:
+        path, original = mutate(export, mutant)
+        try:
+            out, seconds = check(export, mutant.parent.name[:2])
+        finally:
+            path.write_text(original)
+        if log:
+            log.write(f"\n===== {mutant.parent.name}/{mutant.stem} ({seconds:.0f} s)\n{out}")
+            log.flush()
+        r = judge(mutant, out)
+        rows.append((f"{mutant.parent.name}/{mutant.stem}", r))
+        t = per_lab[mutant.parent.name]
+        t["mutants"] += 1
+        t["times"].append(seconds)
+        for key in ("caught", "attributed", "score"):
+            t[key] += r[key]
+        t[r["hint"]] += 1
+        print(f"{mutant.parent.name}/{mutant.stem}: {r['status']}, hint {r['hint']}, {seconds:.0f} s", flush=True)
+    total = print_table(per_lab, rows)
+    ok = all(total[k] == total["mutants"] for k in ("caught", "attributed", "score")) and not total["WRONG"]
+    sys.exit(0 if ok else 1)
+
+
+if __name__ == "__main__":
+    main()
