@@ -77,6 +77,25 @@ void narrowHints(std::vector<std::string>& details) {
                 details.end());
 }
 
+// The table's last line: how many exercises pass, counted as the grader will count them. Those that
+// pass their own tests while their scene waits on another count (the grader draws their scenes with
+// the reference for the others); those blocked by another are not known before it passes.
+std::string summaryLine(int done, size_t total, int waiting, const std::vector<std::string>& blocked) {
+  std::string line = std::to_string(done) + " of " + std::to_string(total) + " exercises pass their tests";
+  if (waiting)
+    line += " (" + std::to_string(waiting) + " by their own tests: the grader draws their scenes with the " +
+            "reference for the others, and gives them their points if those pass)";
+  if (!blocked.empty()) {
+    std::string ids;
+    for (const auto& id : blocked) ids += (ids.empty() ? "" : ", ") + id;
+    const bool one = blocked.size() == 1;
+    line += std::string("; ") + ids + (one ? " is" : " are") + " blocked by another exercise and cannot be " +
+            "checked before that one passes (the grader checks " + (one ? "it" : "them") + " with the reference " +
+            "for the others, so " + (one ? "it" : "they") + " may still earn " + (one ? "its" : "their") + " points)";
+  }
+  return line + ".";
+}
+
 // Where exercise `e` starts in the file being judged ("labs/02_bias/shaders/exercise.glsl:16"): the
 // line of its marker, so that a WRONG verdict says where to look; "" when the file has none.
 std::string exerciseLine(const wb::test::ManifestEntry& e) {
@@ -188,17 +207,15 @@ class CheckListener : public ::testing::EmptyTestEventListener {
       return;
     }
     if (!expectStubs_ && done != int(manifest.size())) exitCode = 1;
-    const std::string waits =
-        waiting ? " (" + std::to_string(waiting) + " by their own tests: the grader draws their " +
-                      "scenes with the reference for the others, and gives them their points " + "if those pass)"
-                : "";
-    std::printf("  %d of %zu exercises pass their tests%s.%s\n", done, manifest.size(), waits.c_str(),
+    std::vector<std::string> blocked;  // (their points are not known before their blockers pass)
+    for (const auto& e : manifest)
+      if (first_.count(e.id) && first_[e.id].headline.rfind("ERROR: blocked by", 0) == 0) blocked.push_back(e.id);
+    const std::string summary = summaryLine(done, manifest.size(), waiting, blocked);
+    std::printf("  %s%s\n", summary.c_str(),
                 expectStubs_ ? (exitCode ? " Some stubs are not reported as NOT IMPLEMENTED."
                                          : " Every stub reports NOT IMPLEMENTED.")
                              : "");
     if (const char* file = std::getenv("WB_CHECK_HTML"); file && *file) {
-      const std::string summary =
-          std::to_string(done) + " of " + std::to_string(manifest.size()) + " exercises pass their tests" + waits + ".";
       if (!wb::test::writeCheckPage(file, "Lab " + std::string(wb::variant::kLab) + ": check", page, summary))
         std::printf("  (the page %s could not be written)\n", file);
     }

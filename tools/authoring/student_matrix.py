@@ -12,9 +12,11 @@ Usage: tools/authoring/student_matrix.py EXPORT [--labs 02,07] [--only NAME,NAME
   --log FILE every mutant's check output, one after another.
 
 Per mutant it reads check's table: caught (the mutant's exercise is "wrong"), attributed (no other
-exercise "wrong" or "error"), the hint (its recorded one from tests/hints, or none where none is
+exercise "wrong" or "error", but for "blocked by" the mutant's exercise where the edition cannot
+check another without the reference: a GLSL function that calls the wrong one), the hint (its recorded one from tests/hints, or none where none is
 recorded), and the summary's count, which must be what the grader gives the same files: every exercise
-but the mutant's (the grader draws each exercise's scenes with the reference for the others). The
+but the mutant's (the grader draws each exercise's scenes with the reference for the others), less
+those blocked, which the summary must name as not known yet. The
 files are put back after each mutant, also when the run is stopped.
 """
 import json
@@ -73,16 +75,23 @@ def judge(mutant, out):
     exercise = fields_of(mutant)[0]["exercise"]
     rows, summary = table(out)
     status, lines = rows.get(exercise, ("missing", []))
-    others = {i: s for i, (s, _) in rows.items() if i != exercise and s in ("wrong", "error")}
+    # "blocked by" the mutant's exercise: where the edition cannot check another exercise without the
+    # reference (a GLSL function that calls the wrong one); its points are then not known, and the
+    # summary says so. Anything else marked wrong or error is a mistake put on the wrong exercise.
+    blocked = {i for i, (s, ls) in rows.items()
+               if i != exercise and s == "error" and ls and ls[0].startswith(f"ERROR: blocked by {exercise}")}
+    others = {i: s for i, (s, _) in rows.items() if i != exercise and s in ("wrong", "error") and i not in blocked}
     shown = [line.split(":", 1)[1].strip() for line in lines if line.startswith("looks like a known mistake")]
     want = recorded_hint(mutant)
     if want:
         hint = "right" if shown and all(want in s or s in want for s in shown) else ("WRONG" if shown else "MISSING")
     else:
         hint = "WRONG" if shown else "none"
-    score = summary is not None and summary[0] == summary[1] - 1
+    score = summary is not None and summary[0] + len(blocked) == summary[1] - 1 and \
+        (not blocked or "cannot be checked before that one passes" in out)
     return {"caught": status == "wrong", "attributed": status == "wrong" and not others, "hint": hint,
-            "score": score, "status": status, "others": others, "shown": shown, "summary": summary}
+            "score": score, "status": status, "others": others, "shown": shown, "summary": summary,
+            "blocked": blocked}
 
 
 def replacements(mutant):
@@ -122,18 +131,17 @@ def print_table(per_lab, rows):
         if not (r["caught"] and r["attributed"] and r["hint"] in ("right", "none") and r["score"]):
             print(f"  {name}: {r['status']}; others {r['others'] or 'none'}; hint {r['hint']} {r['shown']};"
                   f" summary {r['summary']}")
-    print("\n| lab | mutants | caught | attributed | score = grader's | own hint | no hint (none recorded)"
-          " | wrong hints | hints missing | median check (s) |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+    keys = ("mutants", "caught", "attributed", "blocked", "score", "right", "none", "WRONG", "MISSING")
+    print("\n| lab | mutants | caught | attributed | of which another is blocked by it | score = grader's |"
+          " own hint | no hint (none recorded) | wrong hints | hints missing | median check (s) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     total = defaultdict(int)
     for lab, t in sorted(per_lab.items()):
         times = sorted(t.pop("times"))
-        cells = [t[k] for k in ("mutants", "caught", "attributed", "score", "right", "none", "WRONG", "MISSING")]
-        print(f"| {lab} | " + " | ".join(map(str, cells)) + f" | {times[len(times) // 2]:.0f} |")
+        print(f"| {lab} | " + " | ".join(str(t[k]) for k in keys) + f" | {times[len(times) // 2]:.0f} |")
         for k, v in t.items():
             total[k] += v
-    print("| all | " + " | ".join(str(total[k]) for k in
-          ("mutants", "caught", "attributed", "score", "right", "none", "WRONG", "MISSING")) + " | |")
+    print("| all | " + " | ".join(str(total[k]) for k in keys) + " | |")
     return total
 
 
@@ -174,6 +182,7 @@ def main():
         t["times"].append(seconds)
         for key in ("caught", "attributed", "score"):
             t[key] += r[key]
+        t["blocked"] += bool(r["blocked"])
         t[r["hint"]] += 1
         print(f"{mutant.parent.name}/{mutant.stem}: {r['status']}, hint {r['hint']}, {seconds:.0f} s", flush=True)
     total = print_table(per_lab, rows)

@@ -14,7 +14,7 @@ import traceback
 from pathlib import Path
 
 from .chunks import DEFAULT_BUILD_TIMEOUT
-from .common import ROOT, log
+from .common import ROOT, available_cpus, log
 from .grader import Grader, grader_failed
 from .report import Results, first_line
 from .sandbox import Sandbox
@@ -159,7 +159,7 @@ def main():
     labs = load_labs(only)
     sandbox = Sandbox()
     if args.prepare_only:
-        secs = Workspace(0, labs, ROOT / "build-grade", args.judge_build).prepare(os.cpu_count() or 2, sandbox)
+        secs = Workspace(0, labs, ROOT / "build-grade", args.judge_build).prepare(available_cpus(), sandbox)
         log(f"grade: the grading build is ready ({secs:.0f} s)")
         return 0
     if not args.submission:
@@ -187,7 +187,7 @@ def main():
     spaces = [Workspace(k, labs, base, args.judge_build) for k in range(workers)]
     for ws in spaces:
         log(f"grade: preparing the grading build {ws.dir} (the first time builds the framework) ...")
-        secs = ws.prepare(max(1, (os.cpu_count() or 2)), sandbox)
+        secs = ws.prepare(available_cpus(), sandbox)  # (the container's quota, not the host's cores)
         log(f"grade: ready in {secs:.0f} s")
     done = [0]
 
@@ -202,7 +202,7 @@ def main():
 
     def grade_one(ws, sub):
         name, dest = where(sub)
-        cores = max(1, (os.cpu_count() or 2) // workers)
+        cores = max(1, available_cpus() // workers)
         return Grader(ws, labs, sandbox, args.timeout, cores, args.build_timeout).grade(sub, dest, name)
 
     def fail_one(sub, problem, elapsed):

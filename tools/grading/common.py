@@ -1,4 +1,7 @@
-"""What every part of the grader shares: where the checkout is, the sandbox users, size limits."""
+"""What every part of the grader shares: where the checkout is, the sandbox users, size limits, and
+what the machine (or the container) it runs in may use."""
+import math
+import os
 import sys
 from pathlib import Path
 
@@ -12,3 +15,46 @@ MAX_FILE_BYTES = 1 << 20  # a larger "exercise file" is not source code
 
 def log(msg):
     print(msg, file=sys.stderr, flush=True)
+
+
+def cgroup_file(name_v2, name_v1, controller):
+    """The text of this process's cgroup file (v2 `name_v2`, else v1 `controller`/`name_v1`), or ""."""
+    try:
+        for line in Path("/proc/self/cgroup").read_text().splitlines():
+            _, controllers, path = line.split(":", 2)
+            if controllers == "" and (Path("/sys/fs/cgroup") / path.lstrip("/") / name_v2).exists():
+                return (Path("/sys/fs/cgroup") / path.lstrip("/") / name_v2).read_text().strip()
+            if controller in controllers.split(","):
+                for base in (Path("/sys/fs/cgroup") / controller, Path("/sys/fs/cgroup") / controllers):
+                    if (base / path.lstrip("/") / name_v1).exists():
+                        return (base / path.lstrip("/") / name_v1).read_text().strip()
+                    if (base / name_v1).exists():  # (a container sees its own group as the root)
+                        return (base / name_v1).read_text().strip()
+    except (OSError, ValueError):
+        pass
+    return ""
+
+
+def available_cpus():
+    """How many CPUs this process may use: the affinity mask, and the container's CPU quota (cgroup v2
+    cpu.max, v1 cpu.cfs_quota_us / cfs_period_us), rounded up; at least 1. Gradescope's default is half
+    a CPU, where os.cpu_count() says the host's count."""
+    cpus = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
+    quota = cgroup_file("cpu.max", "cpu.cfs_quota_us", "cpu").split()
+    try:
+        if len(quota) == 2 and quota[0] != "max":  # v2: "QUOTA PERIOD"
+            cpus = min(cpus, math.ceil(int(quota[0]) / int(quota[1])))
+        elif len(quota) == 1 and int(quota[0]) > 0:  # v1: the quota; the period is a file of its own
+            period = int(cgroup_file("cpu.max", "cpu.cfs_period_us", "cpu").split()[0] or 100000)
+            cpus = min(cpus, math.ceil(int(quota[0]) / period))
+    except ValueError:
+        pass
+    return max(1, cpus)
+
+
+def available_memory():
+    """The bytes this process's container may use (cgroup v2 memory.max, v1 memory.limit_in_bytes),
+    or the machine's memory where there is no limit."""
+    limit = cgroup_file("memory.max", "memory.limit_in_bytes", "memory")
+    total = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+    return min(total, int(limit)) if limit.isdigit() else total
