@@ -187,4 +187,9 @@ with tempfile.TemporaryDirectory(prefix="gradescope-results-") as tmp:
     check(sorted(rows) == sorted(names.values()), f"7: gradebook rows {rows}")
     check("no network namespace" in (batch / "summary.md").read_text(), "7: summary.md does not report the isolation")
 
+# An __has_include that probes the hidden solutions' exercise.cpp: what the student sees neither names
+# it like their own file nor says that it exists ("Permission denied").
+probe = grade.student_visible("/autograder/source/solutions/09_shadow_volumes/exercise.cpp: Permission denied")
+check("exercise.cpp" not in probe and "Permission denied" not in probe,
+      f"a probe of the solutions reads as the student's own file, or tells that it exists: {probe}")
 finish("gradescope results", "all as expected")

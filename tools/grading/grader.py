@@ -18,7 +18,7 @@ from pathlib import Path
 from .chunks import BUILD_TIMED_OUT, DEFAULT_BUILD_TIMEOUT, build_failure, chunk, keep_only_chunks
 from .common import MAX_FILE_BYTES, ROOT, log
 from .report import Results, first_line
-from .sandbox import describe_limit, run_killable, sweep_leftovers
+from .sandbox import describe_limit, minimal_env, run_killable, sweep_leftovers
 from .submission import find_student_file, student_files, unpack
 from .workspace import copy_tape, own
 
@@ -28,11 +28,11 @@ def runner_stopped(code, out, timed_out, timeout, cpu_seconds=0):
     or []."""
     running = re.findall(r"\[ RUN      \] (\S+)", out)
     test = running[-1] if running else ""
+    if timed_out:
+        return [(test, f"ERROR: timed out after {timeout} s (an endless loop in C++?); the process was killed")]
     limit = describe_limit(code, out, cpu_seconds) if code < 0 or code > 128 else ""
     if limit:
         return [(test, f"ERROR: your code {limit}; the process was stopped in {test or 'start-up'}")]
-    if timed_out:
-        return [(test, f"ERROR: timed out after {timeout} s (an endless loop in C++?); the process was killed")]
     if code < 0 or code > 128:
         sig = -code if code < 0 else code - 128
         name = signal.Signals(sig).name if sig in signal.Signals._value2member_map_ else f"exit {code}"
@@ -76,7 +76,7 @@ class Grader:
         # The builder user compiles, in the sandbox: no network, no view of the solutions.
         t0 = time.time()
         code, out, timed_out = self.sandbox.run(
-            self.ws.build_command(self.build_jobs, labs), self.build_timeout, env=dict(os.environ, HOME="/tmp"),
+            self.ws.build_command(self.build_jobs, labs), self.build_timeout, env=minimal_env(HOME="/tmp"),
             uid=self.ws.builder, **self.ws.builder_binds())
         self.count("compile", t0)
         if timed_out:
@@ -161,8 +161,9 @@ class Grader:
         # WB_VARY_SEED: scene tests turn the scene a little and compare with the solution's render of
         # the same variation, not with the published golden (tests/harness/harness.cpp). Each
         # process has a home of its own: nothing in a shared /tmp (a Mesa .drirc) reaches it.
-        env = dict(os.environ, HOME=str(tape), TMPDIR=str(tape), WB_STRICT_GL="1",
-                   WB_VARY_SEED=str(self.vary_seed), WB_RECORD_SHADERS=str(self.ws.stubs / lab["name"] / "shaders"))
+        # (minimal_env: nothing else of the grader's environment reaches the student's code)
+        env = minimal_env(HOME=str(tape), TMPDIR=str(tape), WB_STRICT_GL="1", WB_VARY_SEED=str(self.vary_seed),
+                          WB_RECORD_SHADERS=str(self.ws.stubs / lab["name"] / "shaders"))
         # WB_REPLAY_USES: the used exercises (manifest "uses") that failed their own tests, the only
         # ones whose recorded results the judge replays beside the graded one; WB_HELD_OUT: quote
         # nothing the runner wrote (it could carry held-out inputs).

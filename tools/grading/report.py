@@ -37,12 +37,22 @@ _STUDENT_FILE = re.compile(r"(?:[\w.+-]*/)*(labs/\d\d_[\w-]+/[^\s:'\"()\[\],]+)"
 _ANY_PATH = re.compile(r"(?<![\w.~-])(?:/|(?:\.{1,2}|[\w.+-]+)/)(?:[^\s/:'\"()\[\],]+/)+([^\s/:'\"()\[\],]+)")
 
 
+def _shrunk(path, name):
+    """A path that is not the student's own: its file name, but never one that could be taken for the
+    student's file (the solutions' exercise.cpp, quoted by an __has_include that probed them)."""
+    if path.startswith("labs/"):
+        return path
+    return "(a file that is not yours)" if name.startswith("exercise") else name
+
+
 def student_visible(text):
-    """`text` without grader paths, build commands or absolute paths (see above)."""
+    """`text` without grader paths, build commands or absolute paths (see above). Whether a file that
+    is not the student's exists is not told either: "Permission denied" reads as not found."""
     lines = [l for l in text.replace(str(ROOT) + "/", "").splitlines() if not _BUILD_LINE.search(l)]
     out = "\n".join(lines)
     out = _STUDENT_FILE.sub(r"\1", out)
-    return _ANY_PATH.sub(lambda m: m.group(0) if m.group(0).startswith("labs/") else m.group(1), out)
+    out = _ANY_PATH.sub(lambda m: _shrunk(m.group(0), m.group(1)), out)
+    return out.replace("Permission denied", "No such file or directory")
 
 
 VISIBILITIES = ("visible", "hidden", "after_due_date", "after_published")
@@ -114,8 +124,7 @@ class Results:
         container, tests not run as nobody)."""
         notes = self.sandbox.notes
         seed = getattr(self, "vary_seed", None)
-        text = (f"Tests ran as {self.sandbox.user}, each exercise in its own process, in "
-                f"{self.sandbox.protections()}" +
+        text = (f"Tests ran each exercise in its own process, in {self.sandbox.protections()}" +
                 (f"; scenes varied with seed {seed} (WB_GRADE_SEED={seed} reproduces this grade)" if seed is not None
                  else "") + ".\n\n" +
                 ("".join(f"- **{n}**\n" for n in notes) if notes else "- Isolation as intended: no network, an "

@@ -37,6 +37,12 @@ LIMITS = {  # generous for a lab, fatal for a bomb
 ETC_FILES = ("ld.so.cache", "ld.so.conf", "ld.so.conf.d", "alternatives", "passwd", "group", "nsswitch.conf")
 
 
+# Where the container runs out of memory before a limit of ours is reached (no cgroup of our own:
+# Gradescope), the kernel kills the process with the highest oom_score_adj: a run of student code
+# raises its own to the most (no privilege needed; it is inherited), so that the grader is never
+# the one chosen, and the run's failure names the memory.
+OOM_FIRST = ["/bin/sh", "-c", 'echo 1000 >/proc/self/oom_score_adj 2>/dev/null; exec "$@"', "sh"]
+
 RUN_OOM = "[sandbox: the run's memory limit was reached and a process of it was killed]"
 
 
@@ -56,6 +62,8 @@ def describe_limit(code, out, cpu_seconds):
         return f"used more than {LIMITS['memory'] // GIB} GiB of memory (the sandbox's limit)"
     if "Resource temporarily unavailable" in out and ("fork" in out or "thread" in out):
         return f"started more than {LIMITS['processes']} processes or threads (the sandbox's limit)"
+    if sig == signal.SIGKILL:  # (not at a time limit: the caller says those first)
+        return "was killed by the system (SIGKILL): most likely the grading machine ran out of memory"
     return ""
 
 
@@ -78,8 +86,10 @@ class Sandbox:
         self.cgroups = Cgroups(LIMITS["processes"], LIMITS["run_memory"]) if self.root else None
         self.groups = self.cgroups.available() if self.cgroups else set()
         if self.groups != {"pids", "memory"}:
-            self.notes.append("no cgroup of its own for each run (only " + (", ".join(sorted(self.groups)) or "none") +
-                              " could be made): the process limit is per sandbox user, shared by its runs at once")
+            made = f"only {', '.join(sorted(self.groups))} could be made" if self.groups else \
+                "none could be made here, as in a container without cgroup delegation such as Gradescope's"
+            self.notes.append(f"no cgroup of its own for each run ({made}): memory is limited per process only, and "
+                              "the process limit is per sandbox user, shared by its runs at once")
         self.runs = itertools.count()
         self.mode = self.try_bwrap() or self.try_unshare() or "session"
         self.user = f"a user of their own (uid {SANDBOX_UID} and up)" if self.drop else "the grader's user"
@@ -103,8 +113,11 @@ class Sandbox:
         if shutil.which("unshare") and subprocess.run(self.ns_prefix() + ["true"], capture_output=True).returncode == 0:
             self.private = self.private_tmp()
             return "unshare"
-        self.notes.append("network and PID namespaces are not available here (unshare failed): tests run with "
-                          "the network, and a process a submission leaves behind is killed by session only")
+        self.notes.append("network and PID namespaces are not available here (unshare failed): the tests ran with "
+                          "network access and could see the container's processes (their command lines, not their "
+                          "environment or files, which belong to another user), and a process a submission leaves "
+                          "behind is killed by its session only; grade where user namespaces are allowed to isolate "
+                          "them")
         return None
 
     def ns_prefix(self):
@@ -184,8 +197,8 @@ class Sandbox:
         name = f"{os.getpid()}-{next(self.runs)}"
         join = self.cgroups.prefix(name) if self.groups else []
         try:
-            code, out, timed_out = run_killable(join + self.prefix(uid, ro, rw, hide, cwd) + cmd, timeout, cwd=cwd,
-                                                env=env)
+            code, out, timed_out = run_killable(OOM_FIRST + join + self.prefix(uid, ro, rw, hide, cwd) + cmd, timeout,
+                                                cwd=cwd, env=env)
             if self.groups and self.cgroups.oom_killed(name):
                 out += "\n" + RUN_OOM
             return code, out, timed_out
@@ -198,6 +211,20 @@ class Sandbox:
         code, out, timed_out = self.run(cmd, 3600, env=env, uid=uid, ro=ro, rw=rw, cwd=cwd)
         if code != 0 or timed_out:
             raise SystemExit(f"grade: could not {what}:\n{out[-4000:]}")
+
+
+# What reaches a run of student code from the grader's environment: the few variables a program and
+# the GL driver need, never the rest (Gradescope's, the grader's own). A run's own are added to it.
+KEPT_ENV = ("PATH", "LANG", "LC_ALL", "TZ")
+KEPT_ENV_PREFIXES = ("MESA_", "LP_", "GALLIUM_", "EGL_", "__EGL_", "LIBGL_", "WB_GL_")
+
+
+def minimal_env(**extra):
+    """The environment of a run of student code: KEPT_ENV and KEPT_ENV_PREFIXES, then `extra`."""
+    env = {k: v for k, v in os.environ.items() if k in KEPT_ENV or k.startswith(KEPT_ENV_PREFIXES)}
+    env.setdefault("PATH", "/usr/bin:/bin")
+    env.update(extra)
+    return env
 
 
 # What a run may print: a real test run prints a few MB at most, so a run past OUTPUT_CAP (a print

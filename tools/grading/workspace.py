@@ -8,6 +8,7 @@ import time
 from pathlib import Path
 
 from .common import BUILDER_UID, MAX_TAPE_BYTES, ROOT, SANDBOX_UID
+from .sandbox import minimal_env
 from .submission import load_labs, student_files
 
 
@@ -147,7 +148,7 @@ class Workspace:
                                   or "WB_REGISTER_TESTS:BOOL=OFF" not in cache):
             shutil.rmtree(self.build)  # a build of another source tree (an older grader's)
         own(self.build, self.builder, 0o755)
-        env = dict(os.environ, HOME="/tmp")
+        env = minimal_env(HOME="/tmp")  # (a compile error could quote /proc/self/environ)
         sandbox.checked(["cmake", "-S", str(self.src), "-B", str(self.build), *flags, "-DWB_REGISTER_TESTS=OFF",
                          f"-DWB_PREBUILT_FRAMEWORK={self.framework}"],  # (discovery would run the student's code)
                         self.builder, env, "configure the runner's build (as the builder user)", **self.builder_binds())
