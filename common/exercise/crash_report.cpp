@@ -134,10 +134,8 @@ void onCrash(int sig) {
   // A stop from outside (the time limit's SIGTERM) goes to any thread, often one of the GL driver's
   // own (Mesa's llvmpipe has several), whose stack holds no line of ours: hand it to the thread that
   // runs the exercises, so that the report says where that one was.
-  if (sig == SIGTERM && !pthread_equal(pthread_self(), g_main)) {
-    pthread_kill(g_main, sig);
-    return;
-  }
+  if (sig == SIGTERM && !pthread_equal(pthread_self(), g_main) && pthread_kill(g_main, sig) == 0)
+    return;                                        // (where the main thread cannot take it, this thread reports)
   for (int s : kSignals) std::signal(s, SIG_DFL);  // a second fault ends the process at once
   void* frames[48];
   const int n = backtrace(frames, 48);

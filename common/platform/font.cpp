@@ -76,8 +76,10 @@ TextBitmap rasterText(const fs::path& ttf, const std::string& text, float pixels
     return {};
   }
   const auto* bytes = reinterpret_cast<const unsigned char*>(data.data());
-  stbtt_fontinfo font;
-  if (ttf.empty() || !stbtt_InitFont(&font, bytes, stbtt_GetFontOffsetForIndex(bytes, 0))) return {};
+  stbtt_fontinfo font;  // (stb_truetype trusts its input: a file too short to be a font is refused first)
+  if (ttf.empty() || data.size() < 12 || stbtt_GetFontOffsetForIndex(bytes, 0) < 0 ||
+      !stbtt_InitFont(&font, bytes, stbtt_GetFontOffsetForIndex(bytes, 0)))
+    return {};
   const float scale = stbtt_ScaleForPixelHeight(&font, pixels);
   int ascent = 0, descent = 0, gap = 0;
   stbtt_GetFontVMetrics(&font, &ascent, &descent, &gap);
@@ -115,7 +117,8 @@ FontAtlas::FontAtlas(const fs::path& ttf) {
   const std::string data = readFile(ttf);
   stbtt_fontinfo font;
   const auto* bytes = reinterpret_cast<const unsigned char*>(data.data());
-  if (!stbtt_InitFont(&font, bytes, stbtt_GetFontOffsetForIndex(bytes, 0)))
+  if (data.size() < 12 || stbtt_GetFontOffsetForIndex(bytes, 0) < 0 ||
+      !stbtt_InitFont(&font, bytes, stbtt_GetFontOffsetForIndex(bytes, 0)))
     throw Error(ttf.string() + " is not a TrueType font");
   const float scale = stbtt_ScaleForPixelHeight(&font, kBakePixels);
   int ascent = 0, descent = 0, gap = 0;

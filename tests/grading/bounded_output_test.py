@@ -38,4 +38,13 @@ check("bytes of output left out" in out, "and says that the middle was left out"
 t0 = time.monotonic()
 code, out, timed_out = run_killable(["sh", "-c", "exec >/dev/null 2>&1; sleep 100"], 2)
 check(timed_out and time.monotonic() - t0 < 10, "a run that closed its output is still stopped at its limit")
+# Builds are sized by the container's CPU quota, not the host's cores: Gradescope's half a CPU is one job.
+import grading.common as common  # noqa: E402
+real = common.cgroup_file
+for quota, period, want in (("50000 100000", "", 1), ("max 100000", "", None), ("150000", "100000", 2), ("-1", "", None)):
+    common.cgroup_file = lambda v2, v1, c, q=quota, p=period: q if v1 != "cpu.cfs_period_us" else (p or q)
+    got = common.available_cpus()
+    cores = len(os.sched_getaffinity(0))
+    check(got == min(want or cores, cores), f"CPU quota {quota!r}: {got} jobs, want {want or 'all'}")
+common.cgroup_file = real
 finish("bounded output", "a flood is stopped and named, head and tail kept, the grader stays small")

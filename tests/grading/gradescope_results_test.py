@@ -8,6 +8,7 @@
 - flat uploads (exercise.cpp, exercise.glsl without folders) belong to the assignment's only lab,
   and are reported as ambiguous when it has several;
 - students in a batch get unique names (erin.smith.zip and erin.jones are two students)."""
+import base64
 import csv
 import json
 import re
@@ -186,6 +187,33 @@ with tempfile.TemporaryDirectory(prefix="gradescope-results-") as tmp:
     rows = [row["student"] for row in csv.DictReader(open(batch / "gradebook.csv"))]
     check(sorted(rows) == sorted(names.values()), f"7: gradebook rows {rows}")
     check("no network namespace" in (batch / "summary.md").read_text(), "7: summary.md does not report the isolation")
+
+# 6. Pictures: a failing visible scene test shows its panels inside the student's output (a data URI);
+# a held-out test's picture never does; the whole results.json stays under 1 MB with many pictures.
+with tempfile.TemporaryDirectory(prefix="gradescope-pictures-") as tmp:
+    out = Path(tmp)
+    (out / "images").mkdir()
+    png = bytes.fromhex("89504e470d0a1a0a") + bytes(60000)  # (a PNG's signature; 60 KB)
+    images = []
+    for k in range(30):
+        (out / "images" / f"01_1_s{k}_panels.png").write_bytes(png)
+        images.append((f"Lab01.Ex01_1_Scene{k}", "picture", f"01_1_s{k}_panels.png"))
+    (out / "images" / "01_1_h_panels.png").write_bytes(png[:8] + bytes([7]) * 60000)  # (held out: other bytes)
+    plain = dict(lab, hidden_points={})
+    r = grade.Results(out, "x", [plain], Sandbox([]))
+    r.add(plain, e1, False, [("Lab01.Ex01_1_Scene0", "WRONG: visibility differs")],
+          [("Hidden01.Ex01_1_SceneHeldOut", "picture", "01_1_h_panels.png")] + images, [])
+    r.finish(1.0)
+    text = (out / "results.json").read_text()
+    res = json.loads(text)
+    first = res["tests"][0]["output"]
+    check("![reference, yours, difference](data:image/png;base64,iVBORw0KGgo" in first,
+          "6: the failing scene's panels are not in the student's output")
+    check(first.count("data:image/png") < 30, "6: every picture went in, past the budget")
+    check(len(text) < 1 << 20, f"6: results.json is {len(text)} bytes, over 1 MB")
+    held = base64.b64encode((out / "images" / "01_1_h_panels.png").read_bytes()).decode()[100:160]
+    check(held not in text, "6: a held-out test's picture is in results.json")
+    check("room for no more" in first, "6: the output does not say that pictures were left out")
 
 # An __has_include that probes the hidden solutions' exercise.cpp: what the student sees neither names
 # it like their own file nor says that it exists ("Permission denied").

@@ -36,8 +36,11 @@ std::string base64(const std::string& bytes) {
 // A detail line as HTML: a picture inside the page (or its path, where it cannot be read), else text.
 std::string detail(const std::string& line) {
   if (line.rfind("picture: ", 0) != 0) return "<div class=d>" + escaped(line) + "</div>\n";
-  const std::string rest = line.substr(9), path = rest.substr(0, rest.find(' '));
-  const std::string caption = path.size() < rest.size() ? rest.substr(path.size() + 1) : "";
+  // "picture: PATH" or "picture: PATH (caption)": a path may hold spaces, so the caption is what the
+  // last " (" starts, where the line ends with ")"
+  const std::string rest = line.substr(9);
+  const size_t open = rest.size() && rest.back() == ')' ? rest.rfind(" (") : std::string::npos;
+  const std::string path = rest.substr(0, open), caption = open == std::string::npos ? "" : rest.substr(open + 1);
   // (check shows paths under the checkout as relative ones: they are read from there)
   const fs::path file = fs::path(path).is_absolute() ? fs::path(path) : fs::path(variant::kSourceDir) / path;
   std::ifstream in(file, std::ios::binary);

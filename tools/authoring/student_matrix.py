@@ -5,6 +5,7 @@ thing wrong would run it. There the judge is the student's own build and every s
 student's own shaders, so this is where a mistake could spill into other exercises.
 
 Usage: tools/authoring/student_matrix.py EXPORT [--labs 02,07] [--only NAME,NAME] [--prepare] [--log FILE]
+       tools/authoring/student_matrix.py --from-log FILE   (judges an earlier run's log again)
   EXPORT     a folder written by ./workbook export-student.
   --prepare  first copies the solutions into EXPORT/labs (a student with every exercise right) and
              builds it; without it, EXPORT must hold them already. Each lab is checked unmutated
@@ -20,8 +21,10 @@ those blocked, which the summary must name as not known yet. The
 files are put back after each mutant, also when the run is stopped.
 """
 import json
+import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import time
@@ -46,11 +49,14 @@ def recorded_hint(mutant):
 def check(export, nn, timeout=600):
     """./workbook check NN in EXPORT: (its output, seconds)."""
     start = time.monotonic()
+    # (a session of its own: past the timeout the judge and the runners go too, not only the workbook)
+    proc = subprocess.Popen(["./workbook", "check", nn], cwd=export, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                            text=True, start_new_session=True)
     try:
-        run = subprocess.run(["./workbook", "check", nn], cwd=export, capture_output=True, text=True, timeout=timeout)
-        out = run.stdout + run.stderr
-    except subprocess.TimeoutExpired as e:
-        out = (e.stdout or b"").decode(errors="replace") + f"\n[student_matrix: check ran past {timeout} s]"
+        out, _ = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        out = proc.communicate()[0] + f"\n[student_matrix: check ran past {timeout} s]"
     return out, time.monotonic() - start
 
 
@@ -81,10 +87,15 @@ def judge(mutant, out):
     blocked = {i for i, (s, ls) in rows.items()
                if i != exercise and s == "error" and ls and ls[0].startswith(f"ERROR: blocked by {exercise}")}
     others = {i: s for i, (s, _) in rows.items() if i != exercise and s in ("wrong", "error") and i not in blocked}
-    shown = [line.split(":", 1)[1].strip() for line in lines if line.startswith("looks like a known mistake")]
+    shown = []  # each hint line: [X] for "looks like a known mistake: X", the options of "one of these:"
+    for k, line in enumerate(lines):
+        if line.startswith("looks like a known mistake: "):
+            shown.append([line.split(":", 1)[1].strip()])
+        elif line.startswith("looks like a known mistake, one of these:"):
+            shown.append([o[2:].strip() for o in lines[k + 1:k + 9] if o.startswith("- ")])
     want = recorded_hint(mutant)
-    if want:
-        hint = "right" if shown and all(want in s or s in want for s in shown) else ("WRONG" if shown else "MISSING")
+    if want:  # (right: every hint line names the mutant's own, alone or among options of the same value)
+        hint = "right" if shown and all(want in options for options in shown) else ("WRONG" if shown else "MISSING")
     else:
         hint = "WRONG" if shown else "none"
     score = summary is not None and summary[0] + len(blocked) == summary[1] - 1 and \
@@ -145,21 +156,8 @@ def print_table(per_lab, rows):
     return total
 
 
-def main():
-    argv = sys.argv[1:]
-    if not argv or argv[0].startswith("-"):
-        sys.exit(__doc__)
-    export = Path(argv[0]).resolve()
-    if (export / "solutions").exists() or not (export / "workbook").exists():
-        sys.exit(f"{export}: not a student edition (./workbook export-student DIR writes one)")
-    labs = argv[argv.index("--labs") + 1].split(",") if "--labs" in argv else []
-    only = argv[argv.index("--only") + 1].split(",") if "--only" in argv else []
-    log = open(argv[argv.index("--log") + 1], "w") if "--log" in argv else None
-    if "--prepare" in argv:
-        prepare(export)
-    mutants = [m for m in sorted((ROOT / "tests/mutants").glob("*/*.mutant"))
-               if (not labs or m.parent.name[:2] in labs) and (not only or m.stem in only)]
-    per_lab, rows = defaultdict(lambda: defaultdict(int, times=[])), []
+def checked_mutants(export, mutants, log):
+    """Hands each mutant in to check: yields (mutant, check's output, seconds)."""
     for nn in sorted({m.parent.name[:2] for m in mutants}):
         out, _ = check(export, nn)
         summary = table(out)[1]
@@ -175,6 +173,36 @@ def main():
         if log:
             log.write(f"\n===== {mutant.parent.name}/{mutant.stem} ({seconds:.0f} s)\n{out}")
             log.flush()
+        yield mutant, out, seconds
+
+
+def logged_mutants(log_file):
+    """The same from a --log file of an earlier run (--from-log: judged again, nothing run)."""
+    blocks = re.split(r"^===== (\S+)/(\S+) \((\d+) s\)$", Path(log_file).read_text(), flags=re.M)
+    for k in range(1, len(blocks) - 3, 4):
+        yield ROOT / "tests/mutants" / blocks[k] / f"{blocks[k + 1]}.mutant", blocks[k + 3], float(blocks[k + 2])
+
+
+def main():
+    argv = sys.argv[1:]
+    if argv[:1] == ["--from-log"] and len(argv) == 2:
+        results = logged_mutants(argv[1])
+    else:
+        if not argv or argv[0].startswith("-"):
+            sys.exit(__doc__)
+        export = Path(argv[0]).resolve()
+        if (export / "solutions").exists() or not (export / "workbook").exists():
+            sys.exit(f"{export}: not a student edition (./workbook export-student DIR writes one)")
+        labs = argv[argv.index("--labs") + 1].split(",") if "--labs" in argv else []
+        only = argv[argv.index("--only") + 1].split(",") if "--only" in argv else []
+        log = open(argv[argv.index("--log") + 1], "w") if "--log" in argv else None
+        if "--prepare" in argv:
+            prepare(export)
+        mutants = [m for m in sorted((ROOT / "tests/mutants").glob("*/*.mutant"))
+                   if (not labs or m.parent.name[:2] in labs) and (not only or m.stem in only)]
+        results = checked_mutants(export, mutants, log)
+    per_lab, rows = defaultdict(lambda: defaultdict(int, times=[])), []
+    for mutant, out, seconds in results:
         r = judge(mutant, out)
         rows.append((f"{mutant.parent.name}/{mutant.stem}", r))
         t = per_lab[mutant.parent.name]

@@ -22,8 +22,10 @@ def cgroup_file(name_v2, name_v1, controller):
     try:
         for line in Path("/proc/self/cgroup").read_text().splitlines():
             _, controllers, path = line.split(":", 2)
-            if controllers == "" and (Path("/sys/fs/cgroup") / path.lstrip("/") / name_v2).exists():
-                return (Path("/sys/fs/cgroup") / path.lstrip("/") / name_v2).read_text().strip()
+            if controllers == "":  # v2 (a container may see its own group as the root)
+                for f in (Path("/sys/fs/cgroup") / path.lstrip("/") / name_v2, Path("/sys/fs/cgroup") / name_v2):
+                    if f.exists():
+                        return f.read_text().strip()
             if controller in controllers.split(","):
                 for base in (Path("/sys/fs/cgroup") / controller, Path("/sys/fs/cgroup") / controllers):
                     if (base / path.lstrip("/") / name_v1).exists():
@@ -45,7 +47,7 @@ def available_cpus():
         if len(quota) == 2 and quota[0] != "max":  # v2: "QUOTA PERIOD"
             cpus = min(cpus, math.ceil(int(quota[0]) / int(quota[1])))
         elif len(quota) == 1 and int(quota[0]) > 0:  # v1: the quota; the period is a file of its own
-            period = int(cgroup_file("cpu.max", "cpu.cfs_period_us", "cpu").split()[0] or 100000)
+            period = int((cgroup_file("cpu.max", "cpu.cfs_period_us", "cpu").split() or ["100000"])[0])
             cpus = min(cpus, math.ceil(int(quota[0]) / period))
     except ValueError:
         pass

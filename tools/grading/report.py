@@ -1,5 +1,6 @@
 """The results of one submission: Gradescope's results.json (rewritten after every exercise),
 junit.xml, report.md and report.html; what students see holds none of the grader's paths."""
+import base64
 import html
 import json
 import os
@@ -56,6 +57,8 @@ def student_visible(text):
 
 
 VISIBILITIES = ("visible", "hidden", "after_due_date", "after_published")
+PICTURE_BYTES = 100 << 10  # a picture larger than this is left to the instructor's report
+RESULTS_PICTURE_BYTES = 700 << 10  # what the pictures of one results.json may take, base64 included
 
 
 def gradescope_visibility(visibility, points):
@@ -111,12 +114,29 @@ class Results:
     def score(self):
         return sum(x["score"] for x in self.entries)
 
-    def entry_output(self, x):
-        """Markdown for Gradescope: the status, notes and first failures, without the grader's paths."""
+    def entry_output(self, x, budget=None):
+        """Markdown for Gradescope: the status, notes and first failures, without the grader's paths,
+        then the pictures of its failing visible tests (a scene's three panels, a sweep's plot) inside
+        it as data URIs, while `budget` (bytes, a one-item list shared by the whole results.json) lasts."""
         lines = [f"**{x['status']}**"] + [f"- {n}" for n in x["notes"]]
         for test, msg in x["failures"][:5]:
             lines.append(f"\n`{test}`\n```\n{msg.strip()[:2000]}\n```" if test else f"\n```\n{msg.strip()[:2000]}\n```")
-        return student_visible("\n".join(lines))
+        text = student_visible("\n".join(lines))
+        if x["visibility"] != "visible" or budget is None:
+            return text
+        for test, label, name in x["images"]:
+            path = self.out / "images" / name
+            if test.startswith("Hidden") or not path.exists() or path.stat().st_size > PICTURE_BYTES:
+                continue  # (a held-out test's picture would show its scene)
+            data = base64.b64encode(path.read_bytes()).decode()
+            if len(data) > budget[0]:
+                text += "\n\n(more pictures in the instructor's report: this output has room for no more)"
+                break
+            budget[0] -= len(data)
+            caption = ("reference, yours, difference" if name.endswith("panels.png") else
+                       "yours against the reference" if label == "picture" else label)
+            text += f"\n\n![{caption}](data:image/png;base64,{data})"
+        return text
 
     def environment(self):
         """How the tests ran, for the instructor: a Gradescope test that students never see, with no
@@ -154,9 +174,10 @@ class Results:
         """results.json, with only the keys of Gradescope's autograder specification (docs/gradescope.md).
         The top-level score is the total (the grade); Gradescope hides it from students while a test
         that carries points is not visible yet."""
+        budget = [RESULTS_PICTURE_BYTES]  # (Gradescope's results.json stays under 1 MB)
         tests = [{"name": f"{x['id']} {x['title']}", "number": x["id"], "score": x["score"],
                   "max_score": 0 if x["extension"] else x["points"], "status": "passed" if x["ok"] else "failed",
-                  "output": self.entry_output(x), "output_format": "md", "visibility": x["visibility"]}
+                  "output": self.entry_output(x, budget), "output_format": "md", "visibility": x["visibility"]}
                  for x in self.entries]
         doc = {"score": self.score(), "output": self.summary(partial), "output_format": "md",
                "visibility": "visible", "stdout_visibility": "hidden",

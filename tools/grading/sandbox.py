@@ -41,7 +41,7 @@ ETC_FILES = ("ld.so.cache", "ld.so.conf", "ld.so.conf.d", "alternatives", "passw
 # Gradescope), the kernel kills the process with the highest oom_score_adj: a run of student code
 # raises its own to the most (no privilege needed; it is inherited), so that the grader is never
 # the one chosen, and the run's failure names the memory.
-OOM_FIRST = ["/bin/sh", "-c", 'echo 1000 >/proc/self/oom_score_adj 2>/dev/null; exec "$@"', "sh"]
+OOM_FIRST = ["/bin/sh", "-c", '{ echo 1000 >/proc/self/oom_score_adj; } 2>/dev/null; exec "$@"', "sh"]
 
 RUN_OOM = "[sandbox: the run's memory limit was reached and a process of it was killed]"
 
@@ -215,7 +215,7 @@ class Sandbox:
 
 # What reaches a run of student code from the grader's environment: the few variables a program and
 # the GL driver need, never the rest (Gradescope's, the grader's own). A run's own are added to it.
-KEPT_ENV = ("PATH", "LANG", "LC_ALL", "TZ")
+KEPT_ENV = ("PATH", "LANG", "LC_ALL", "TZ", "WB_FONT")
 KEPT_ENV_PREFIXES = ("MESA_", "LP_", "GALLIUM_", "EGL_", "__EGL_", "LIBGL_", "WB_GL_")
 
 
