@@ -25,7 +25,8 @@ reasons = {"compile_error": "does not compile", "segfault": "SIGSEGV", "endless_
            "symlink": "is a link", "empty_glsl": "ERROR", "memory_bomb": "used more than 2 GiB of memory",
            "glsl_include_relative": "is not allowed", "glsl_include_deeper": "is not allowed",
            "glsl_include_absolute": "is not allowed", "link_error": "undefined reference to",
-           "glsl_endless_same": ("longer than the reference", "timed out")}
+           "glsl_endless_same": ("longer than the reference", "timed out"),
+           "flood": "the grader kept the first and last 512 KB"}
 root = Path(__file__).resolve().parent.parent.parent
 
 rows = {r["student"]: r for r in csv.DictReader(open(grades / "gradebook.csv"))}
@@ -88,7 +89,7 @@ for name in expected:
     leaked = [l for l in solution_lines if l in text]
     check(not leaked, f"{name}: results.json shows solution code: {leaked[:2]}")
     # The held-out tests and their scenes likewise (leak_secrets throws whatever it could read).
-    for mark in ("LEAKED", "HELDOUT ", "REQUEST ", "SMUGGLED"):
+    for mark in ("LEAKED", "HELDOUT ", "REQUEST ", "SMUGGLED", "SNOOPED", '"forged"'):
         check(mark not in text, f"{name}: results.json shows a file its code read: {text[text.find(mark):][:200]}")
 
 # Nothing a runner wrote landed outside its own folders (write_other tries every folder it can reach).

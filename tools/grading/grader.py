@@ -18,7 +18,7 @@ from pathlib import Path
 from .chunks import BUILD_TIMED_OUT, DEFAULT_BUILD_TIMEOUT, build_failure, chunk, keep_only_chunks
 from .common import MAX_FILE_BYTES, ROOT, log
 from .report import Results, first_line
-from .sandbox import describe_limit, minimal_env, run_killable, sweep_leftovers
+from .sandbox import describe_limit, kill_sandbox_processes, minimal_env, run_killable, sweep_leftovers
 from .submission import find_student_file, student_files, unpack
 from .workspace import copy_tape, own
 
@@ -58,6 +58,7 @@ class Grader:
         # labs 01 and 02 took 31 s with 4 at once, against 34-36 s with 2).
         self.test_jobs = 2 * self.build_jobs
         self.build_timeouts = 0  # how many builds of this submission were stopped
+        self.printed = {}  # exercise tag ("01_1") -> MB its runner printed, where the grader cut its output
         # A fresh variation of every scene per submission, unless the instructor fixes one to reproduce a grade.
         self.vary_seed = int(os.environ.get("WB_GRADE_SEED") or secrets.randbelow(1 << 32))
         # Where the time goes, summed over exercises graded at once: every build (compile and link),
@@ -176,11 +177,15 @@ class Grader:
         code, out, timed_out = self.sandbox.run([str(runner)] + what + ["--runner", str(tape)], self.timeout,
                                                 env=env, cwd=tape, uid=uid, **binds)
         self.count("runner", t0)
+        kill_sandbox_processes([uid])  # (nothing of the run goes on while its tape is read)
         if held_out:  # the held-out inputs go as soon as they are used, and nothing of them is quoted
             shutil.rmtree(tape / "inputs", ignore_errors=True)
             (tape / "requests.jsonl").unlink(missing_ok=True)
             out = ""
         stopped = runner_stopped(code, out, timed_out, self.timeout, self.sandbox.cpu_seconds)  # (shown first)
+        cut = re.search(r"\[grader: cut here: \d+ bytes of output left out \(the run printed (\d+) MB\)\]", out)
+        if cut:  # (a flood is graded as it ended; the student is told that its output was cut)
+            self.printed[tag.rsplit("_", 1)[0]] = int(cut.group(1))
         copy_tape(tape, judged / "tape")
         report = judged / "report.json"
         t0 = time.time()
@@ -380,7 +385,11 @@ class Grader:
                             outcome[e["id"]] = alone
                 for e in lab["exercises"]:
                     ok, failures, kept, hidden_result, has_hidden = outcome[e["id"]]
-                    results.add(lab, e, ok, failures, kept, notes, hidden_result=hidden_result, hidden=has_hidden)
+                    mb = self.printed.get(e["id"].replace(".", "_"))
+                    printed = [f"your tests printed {mb} MB while they ran: the grader kept the first and last "
+                               "512 KB of it and left the rest out (a print in a loop?)"] if mb is not None else []
+                    results.add(lab, e, ok, failures, kept, notes + printed, hidden_result=hidden_result,
+                                hidden=has_hidden)
             results.timing["tests"] = time.time() - t_tests
             results.timing.update(self.spent)
 

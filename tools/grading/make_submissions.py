@@ -42,7 +42,9 @@ The red team (cheats score zero; honest oddities score full marks):
   tools/grading/redteam.py     the second red team's cheats on the sandbox: GLSL includes of the reference,
                        a C++ include of a second copy (--second-copy DIR), IPC and /tmp smuggling,
                        memory and fork bombs, an endless loop that leaves the result as it was, a
-                       link error (see its doc)
+                       link error; and the weakest sandbox's: /proc snooping, a daemon that forges
+                       results, a FIFO swapped into the tape (see its doc)
+--only NAME,NAME keeps those submissions alone.
 
 DIR/expected.json gives the score each should get and the exercises it should lose, computed from
 labs/*/exercises.json: the grader is held against it by tests/grading.
@@ -260,6 +262,7 @@ def main():
     ap.add_argument("--labs", help="only these labs, e.g. 01,02")
     ap.add_argument("--second-copy", help="a folder holding a second copy of the solutions (solutions/NN_name/...), "
                                           "for the cpp_include_copy cheat")
+    ap.add_argument("--only", help="only these submissions, e.g. full,flood")
     args = ap.parse_args()
     only = [x.strip().zfill(2) for x in args.labs.split(",")] if args.labs else None
     the_labs = labs(only)
@@ -396,7 +399,14 @@ static_assert(CompileTimeSteps<800>::value == 800, "800 steps");
             write_tree(out / name, lambda lab: ROOT / "labs" / lab, the_labs)
             return out / name
         redteam.sandbox_cheats(out, full_one, expect_one, cpp, glsl, the_labs, stubs_of, args.second_copy, ROOT)
+        redteam.weak_sandbox_cheats(out, full_one, stubs_of, expect_one, cpp, the_labs)
 
+    if args.only:  # (the others are not kept)
+        keep = set(args.only.split(","))
+        for name in set(expected) - keep:
+            path = out / (name + ".zip" if (out / (name + ".zip")).exists() else name)
+            shutil.rmtree(path) if path.is_dir() else path.unlink(missing_ok=True)
+            del expected[name]
     (out / "expected.json").write_text(json.dumps(expected, indent=2) + "\n")
     print(f"wrote {len(expected)} submissions to {out} (expected scores in expected.json)")
     if "endless_build" in expected:

@@ -20,6 +20,18 @@ tools/grading/make_submissions.py. Each scores only what it earned:
   link_error             full, with a C++ exercise calling a function that is declared but never
                          defined: that exercise is lost, and the report shows the linker's
                          "undefined reference" line
+
+And the cheats of the weakest sandbox (Gradescope's container: no namespaces), which
+tests/grading/run_weak_class.sh grades with bubblewrap and unshare turned off (WB_SANDBOX_MODE=session):
+  proc_snoop             full, with C++ that reads every other process's command line and
+                         environment it can and throws what holds a secret (a seed, a path of the
+                         solutions or the held-out tests): it finds none, so full marks
+  results_daemon         the stubs, with a daemon (a session of its own, so a session's kill misses
+                         it) that rewrites every tape and results.json it can reach for a minute: it
+                         is killed when its run ends, so zero, and nothing forged is read
+  fifo_tape              full, with a runner that swaps its tape for a FIFO as it exits, which would
+                         stop a grader that opened it: grading goes on, and that lab's exercises
+                         are lost (no record)
 """
 import re
 
@@ -143,3 +155,88 @@ def sandbox_cheats(out, full, expect, cpp, glsl, the_labs, stubs_of, second_copy
     st.prepend(d, lab, e_cpp["file"], "float wbDeclaredNeverDefined(float x);\n")
     st.edit(d, lab, e_cpp["file"], e_cpp["id"], "  if (wbDeclaredNeverDefined(1.0f) > 2.0f) throw 1;\n")
     expect("link_error", [e_cpp["id"]])
+
+
+SNOOP = r"""
+#include <dirent.h>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+namespace {
+// Every other process's command line and environment that this one can read; what holds a secret.
+std::string snooped() {
+  std::string found;
+  if (DIR* proc = opendir("/proc")) {
+    while (dirent* e = readdir(proc)) {
+      for (const char* part : {"/cmdline", "/environ"}) {
+        std::stringstream text;
+        text << std::ifstream(std::string("/proc/") + e->d_name + part).rdbuf();
+        for (const char* secret : {"WB_VARY_SEED=", "WB_GRADE_SEED=", "/solutions", "tests/hidden", "HELD_OUT=1"})
+          if (text.str().find(secret) != std::string::npos) found += text.str().substr(0, 300) + "\\n";
+      }
+    }
+    closedir(proc);
+  }
+  return found;
+}
+void throwSnooped() {
+  const std::string s = snooped();
+  if (!s.empty()) throw std::runtime_error("SNOOPED " + s);
+}
+}  // namespace
+"""
+
+RESULTS_DAEMON = r"""
+#include <sys/stat.h>
+#include <fcntl.h>
+#include <unistd.h>
+#include <fstream>
+#include <string>
+namespace {
+// A grandchild in a session of its own, which rewrites the tape it was started beside and any
+// results.json it can reach, every 10 ms for a minute.
+const int forged = [] {
+  if (fork() != 0) return 0;
+  setsid();
+  if (fork() != 0) _exit(0);
+  const std::string here = getcwd(nullptr, 0);
+  for (int i = 0; i < 6000; ++i) {
+    for (const std::string& f : {here + "/tape.jsonl", here + "/../results.json", std::string("/autograder/results/results.json")})
+      std::ofstream(f) << "{\"score\": 100, \"forged\": true}\n";
+    usleep(10000);
+  }
+  _exit(0);
+}();
+}  // namespace
+"""
+
+FIFO_TAPE = r"""
+#include <sys/stat.h>
+#include <unistd.h>
+#include <cstdio>
+namespace {
+// As the runner exits, its tape becomes a FIFO: a grader that opened it would wait for ever.
+struct SwapTape {
+  ~SwapTape() {
+    std::remove("tape.jsonl");
+    mkfifo("tape.jsonl", 0666);
+  }
+} swapTape;
+}  // namespace
+"""
+
+
+def weak_sandbox_cheats(out, full, stubs_of, expect, cpp, the_labs):
+    """Writes the weakest sandbox's cheats above into `out` with their expected results."""
+    lab, e_cpp = cpp
+    lab_ids = [e["id"] for e in dict(the_labs)[lab]]
+    everything = [e["id"] for _, ex in the_labs for e in ex]
+    d = full("proc_snoop")
+    st.prepend(d, lab, e_cpp["file"], SNOOP)
+    st.edit(d, lab, e_cpp["file"], e_cpp["id"], "  throwSnooped();\n")
+    expect("proc_snoop", [])
+    st.prepend(stubs_of("results_daemon"), lab, e_cpp["file"], RESULTS_DAEMON)
+    expect("results_daemon", everything)
+    st.prepend(full("fifo_tape"), lab, e_cpp["file"], FIFO_TAPE)
+    expect("fifo_tape", lab_ids)

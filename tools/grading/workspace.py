@@ -3,6 +3,7 @@ and reused for every submission, and the copy of a runner's tape the judge reads
 import os
 import re
 import shutil
+import stat
 import subprocess
 import time
 from pathlib import Path
@@ -253,9 +254,12 @@ def copy_tape(src, dest):
         if total + size > MAX_TAPE_BYTES:
             continue
         total += size
-        try:
-            fd = os.open(entry.path, os.O_RDONLY | os.O_NOFOLLOW)
+        try:  # (non-blocking: a FIFO swapped in since scandir would stop the grader at open)
+            fd = os.open(entry.path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
         except OSError:
+            continue
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            os.close(fd)
             continue
         with os.fdopen(fd, "rb") as f_in, open(dest / entry.name, "wb") as f_out:
             f_out.write(f_in.read(size))
