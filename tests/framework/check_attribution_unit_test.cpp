@@ -70,6 +70,27 @@ TEST(CheckAttribution, WithoutTheReferenceOneMistakeCostsOneExercise) {
       << first["07.1"].headline;
 }
 
+// 07.2 loops for ever: 07.4, which calls it, times out in its scene. That time-out is 07.2's too, so
+// 07.4 is blocked by 07.2 and counted as not known yet; a compile error of 07.4's own stays its own.
+TEST(CheckAttribution, ATimeOutInACallerOfAnEndlessLoopIsTheLoops) {
+  const fs::path dir = fs::path(wb::variant::kOutputDir) / "attribution_timeout";
+  fs::create_directories(dir / "shaders");
+  std::ofstream(dir / "shaders/exercise.glsl") << kShader;
+  setenv("WB_SUBMISSION_DIR", dir.c_str(), 1);
+  for (const char* own :
+       {"ERROR: the lab timed out: timed out (stopped at its time limit: an endless loop?)", "ERROR: compile error:"}) {
+    std::map<std::string, Diagnosis> first = {{"07.2", failure("WRONG", "WRONG: got 65535, want 30")},
+                                              {"07.4", failure("ERROR", own)}};
+    std::map<std::string, std::string> blockers;
+    std::set<std::string> unblocked;
+    wb::test::attribute(kManifest, {first, {"07.2", "07.4"}, blockers, unblocked});
+    const bool compile = std::string(own).find("compile") != std::string::npos;
+    EXPECT_EQ(first["07.4"].headline.rfind(compile ? "ERROR: compile error" : "ERROR: blocked by 07.2", 0), 0u)
+        << first["07.4"].headline;
+  }
+  unsetenv("WB_SUBMISSION_DIR");
+}
+
 // A stub is not implemented, whatever it calls.
 TEST(CheckAttribution, AStubStaysNotImplemented) {
   const fs::path dir = fs::path(wb::variant::kOutputDir) / "attribution_stub";

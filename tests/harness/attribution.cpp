@@ -77,13 +77,19 @@ void markStops(const std::vector<ManifestEntry>& manifest, Findings& f) {
 }
 
 // Without the reference, a GLSL exercise's kernel runs the student's own code for the exercises it
-// calls: when one of those fails its own tests, this one's failure may be that one's. It is blocked
-// by it (no hint: a hint is proved with the reference's helpers), unless it is still the stub.
+// calls: when one of those fails its own tests, this one's failure (wrong, or a time-out: the other's
+// endless loop) may be that one's. It is blocked by it (no hint: a hint is proved with the
+// reference's helpers), unless it is still the stub.
 void blockWhereUpstreamFails(const std::vector<ManifestEntry>& manifest, Findings& f) {
   for (const auto& e : manifest) {
     auto d = f.first.find(e.id);
     if (e.file.rfind("shaders/", 0) != 0 || d == f.first.end() || !f.ownFailed.count(e.id)) continue;
-    if (d->second.verdict != "WRONG" && d->second.verdict != "NOT IMPLEMENTED") continue;
+    // (an error of its own, such as a time-out, may be the helper's loop too; a compile error is its own)
+    const std::string& headline = d->second.headline;
+    const bool ownError = headline.rfind("ERROR: blocked", 0) == 0 || headline.find("compile") != std::string::npos;
+    if (d->second.verdict != "WRONG" && d->second.verdict != "NOT IMPLEMENTED" &&
+        (d->second.verdict != "ERROR" || ownError))
+      continue;
     std::string text;
     try {
       text = readFile(submittedShaderFile(e.file.substr(8)));
