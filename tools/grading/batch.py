@@ -177,6 +177,9 @@ def main():
     out = Path(args.out) if args.out else ROOT / "grades" / (src.name if args.batch else submission_name(src))
     out.mkdir(parents=True, exist_ok=True)
     workers = max(1, min(args.jobs, len(subs)))
+    if sandbox.mode == "session" and workers > 1:  # (see Grader.test_jobs: no judge beside a student's run)
+        log("grade: one submission at a time: without namespaces a student's run could see another's judge")
+        workers = 1
     base = ROOT / "build-grade"
     if sandbox.drop:  # what the student's code must not read: everything of the instructor's but its trees
         hide_from_sandbox([p for p in ROOT.iterdir() if p.name != "build-grade"] + [out] + ([src] if args.batch else [])

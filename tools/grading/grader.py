@@ -18,7 +18,7 @@ from pathlib import Path
 from .chunks import BUILD_TIMED_OUT, DEFAULT_BUILD_TIMEOUT, build_failure, chunk, keep_only_chunks
 from .common import MAX_FILE_BYTES, ROOT, log
 from .report import Results, first_line
-from .sandbox import describe_limit, kill_sandbox_processes, minimal_env, run_killable, sweep_leftovers
+from .sandbox import describe_limit, minimal_env, run_killable, sweep_leftovers
 from .submission import find_student_file, student_files, unpack
 from .workspace import copy_tape, own
 
@@ -56,7 +56,9 @@ class Grader:
         # Exercises graded at once: twice the cores, since a runner or a judge is a short process that
         # waits for its start-up and files for a good part of its time (on 2 cores, 6 submissions of
         # labs 01 and 02 took 31 s with 4 at once, against 34-36 s with 2).
-        self.test_jobs = 2 * self.build_jobs
+        # Without a PID namespace (the weakest mode: Gradescope's container) a student's run could read
+        # the command line of a judge drawing a held-out scene beside it: one exercise at a time there.
+        self.test_jobs = 2 * self.build_jobs if sandbox.mode != "session" else 1
         self.build_timeouts = 0  # how many builds of this submission were stopped
         self.printed = {}  # exercise tag ("01_1") -> MB its runner printed, where the grader cut its output
         # A fresh variation of every scene per submission, unless the instructor fixes one to reproduce a grade.
@@ -177,7 +179,6 @@ class Grader:
         code, out, timed_out = self.sandbox.run([str(runner)] + what + ["--runner", str(tape)], self.timeout,
                                                 env=env, cwd=tape, uid=uid, **binds)
         self.count("runner", t0)
-        kill_sandbox_processes([uid])  # (nothing of the run goes on while its tape is read)
         if held_out:  # the held-out inputs go as soon as they are used, and nothing of them is quoted
             shutil.rmtree(tape / "inputs", ignore_errors=True)
             (tape / "requests.jsonl").unlink(missing_ok=True)

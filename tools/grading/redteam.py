@@ -23,15 +23,16 @@ tools/grading/make_submissions.py. Each scores only what it earned:
 
 And the cheats of the weakest sandbox (Gradescope's container: no namespaces), which
 tests/grading/run_weak_class.sh grades with bubblewrap and unshare turned off (WB_SANDBOX_MODE=session):
-  proc_snoop             full, with C++ that reads every other process's command line and
-                         environment it can and throws what holds a secret (a seed, a path of the
-                         solutions or the held-out tests): it finds none, so full marks
+  proc_snoop             full, with C++ that reads every process's command line and environment it
+                         can and throws what holds a secret (the grader's seed, a path of the
+                         solutions or the held-out tests, the judge's held-out flag): it finds none,
+                         so full marks
   results_daemon         the stubs, with a daemon (a session of its own, so a session's kill misses
                          it) that rewrites every tape and results.json it can reach for a minute: it
                          is killed when its run ends, so zero, and nothing forged is read
   fifo_tape              full, with a runner that swaps its tape for a FIFO as it exits, which would
-                         stop a grader that opened it: grading goes on, and that lab's exercises
-                         are lost (no record)
+                         stop a grader that opened it: grading goes on, and that lab's C++
+                         exercises are lost (no record; the GLSL ones the judge runs itself)
 """
 import re
 
@@ -172,7 +173,7 @@ std::string snooped() {
       for (const char* part : {"/cmdline", "/environ"}) {
         std::stringstream text;
         text << std::ifstream(std::string("/proc/") + e->d_name + part).rdbuf();
-        for (const char* secret : {"WB_VARY_SEED=", "WB_GRADE_SEED=", "/solutions", "tests/hidden", "HELD_OUT=1"})
+        for (const char* secret : {"WB_GRADE_SEED=", "/solutions/", "tests/hidden", "WB_HELD_OUT=1"})
           if (text.str().find(secret) != std::string::npos) found += text.str().substr(0, 300) + "\\n";
       }
     }
@@ -230,7 +231,7 @@ struct SwapTape {
 def weak_sandbox_cheats(out, full, stubs_of, expect, cpp, the_labs):
     """Writes the weakest sandbox's cheats above into `out` with their expected results."""
     lab, e_cpp = cpp
-    lab_ids = [e["id"] for e in dict(the_labs)[lab]]
+    cpp_ids = [e["id"] for e in dict(the_labs)[lab] if e["file"] == e_cpp["file"]]
     everything = [e["id"] for _, ex in the_labs for e in ex]
     d = full("proc_snoop")
     st.prepend(d, lab, e_cpp["file"], SNOOP)
@@ -239,4 +240,4 @@ def weak_sandbox_cheats(out, full, stubs_of, expect, cpp, the_labs):
     st.prepend(stubs_of("results_daemon"), lab, e_cpp["file"], RESULTS_DAEMON)
     expect("results_daemon", everything)
     st.prepend(full("fifo_tape"), lab, e_cpp["file"], FIFO_TAPE)
-    expect("fifo_tape", lab_ids)
+    expect("fifo_tape", cpp_ids)

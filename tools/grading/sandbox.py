@@ -20,6 +20,7 @@ import shutil
 import signal
 import stat
 import subprocess
+import threading
 import time
 from pathlib import Path
 
@@ -89,6 +90,7 @@ class Sandbox:
             self.notes.append(f"no cgroup of its own for each run ({made}): memory is limited per process only, and "
                               "the process limit is per sandbox user, shared by its runs at once")
         self.runs = itertools.count()
+        self.sessions, self.lock = set(), threading.Lock()  # the sessions of the runs going on (kill_strays)
         # WB_SANDBOX_MODE=unshare or session: a weaker mode than this machine allows, to test the grader
         # as it runs where namespaces cannot be made (Gradescope's container: tests/grading/run_weak_class.sh).
         forced = os.environ.get("WB_SANDBOX_MODE", "")
@@ -202,15 +204,34 @@ class Sandbox:
         own where they can be made."""
         name = f"{os.getpid()}-{next(self.runs)}"
         join = self.cgroups.prefix(name) if self.groups else []
+        session = []
         try:
             code, out, timed_out = run_killable(OOM_FIRST + join + self.prefix(uid, ro, rw, hide, cwd) + cmd, timeout,
-                                                cwd=cwd, env=env)
+                                                cwd=cwd, env=env, started=lambda sid: self.enter(session, sid))
             if self.groups and self.cgroups.oom_killed(name):
                 out += "\n" + RUN_OOM
             return code, out, timed_out
         finally:
             if self.groups:
                 self.cgroups.remove(name)
+            with self.lock:
+                self.sessions.difference_update(session)
+            self.kill_strays(uid)
+
+    def enter(self, session, sid):
+        with self.lock:
+            self.sessions.add(sid)
+        session.append(sid)
+
+    def kill_strays(self, uid):
+        """In the weakest mode (no PID namespace) a process may leave its run's session (setsid) and
+        outlive the run, to change its tape or a later run's: every process of `uid` that is in no
+        running run's session is killed when a run ends. (bubblewrap and unshare end every process
+        of a run with it.)"""
+        if self.mode != "session":
+            return
+        with self.lock:
+            kill_sandbox_processes([uid], spare=set(self.sessions))
 
     def checked(self, cmd, uid, env, what, ro=(), rw=(), cwd=None):
         """Runs a step of the grader's own (a build) in the sandbox; stops the grader when it fails."""
@@ -239,7 +260,7 @@ def minimal_env(**extra):
 KEEP = 512 << 10
 
 
-def run_killable(cmd, timeout, cwd=None, env=None):
+def run_killable(cmd, timeout, cwd=None, env=None, started=None):
     """Runs cmd in its own session: (exit code or -signal, output, timed_out). On time-out the whole
     session is killed (a test binary and any lab it started; a build's make and compilers), which
     subprocess.run(timeout=...) would not do: it kills only its child and leaves the rest running.
@@ -247,8 +268,10 @@ def run_killable(cmd, timeout, cwd=None, env=None):
     out, the output says so."""
     proc = subprocess.Popen(cmd, cwd=cwd, env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, start_new_session=True)
+    if started:
+        started(proc.pid)  # (its session: the pid of its first process)
     deadline = time.monotonic() + timeout
-    head, tail, total, timed_out = bytearray(), bytearray(), 0, False
+    head, tail, total, timed_out, ended = bytearray(), bytearray(), 0, False, None
     fd = proc.stdout.fileno()
     with selectors.DefaultSelector() as sel:
         sel.register(fd, selectors.EVENT_READ)
@@ -257,7 +280,13 @@ def run_killable(cmd, timeout, cwd=None, env=None):
             if left <= 0:
                 timed_out = True
                 break
-            if not sel.select(min(left, 1.0)):
+            # Once the run's first process has ended, what it left behind (a daemon holding the
+            # output) is not waited for: a second more of output, then the run is over.
+            if ended is None and proc.poll() is not None:
+                ended = time.monotonic()
+            if ended is not None and time.monotonic() - ended > 1.0:
+                break
+            if not sel.select(min(left, 0.25)):
                 continue
             chunk = os.read(fd, 1 << 16)
             if not chunk:  # every writer is gone
@@ -340,12 +369,10 @@ def sweep_leftovers(uids):
     kill_sandbox_processes(uids)
 
 
-def kill_sandbox_processes(uids):
-    """Kills every process running as one of `uids`: after each run of student code, so that nothing
-    it started (a daemon in a session of its own, which a session's kill misses) outlives it to
-    change its tape or a later run's."""
+def kill_sandbox_processes(uids, spare=frozenset()):
+    """Kills every process running as one of `uids`, but those in the sessions `spare`."""
     for _ in range(3):  # (a process may fork while the list is read)
-        pids = sandbox_processes(uids)
+        pids = [p for p in sandbox_processes(uids) if session_of(p) not in spare]
         for pid in pids:
             try:
                 os.kill(pid, signal.SIGKILL)
@@ -368,6 +395,14 @@ def sandbox_ipc(kind, uids):
     at_id, at_uid = head.index("id"), head.index("uid")
     return [f[at_id] for f in (l.split() for l in lines[1:])
             if len(f) > max(at_id, at_uid) and int(f[at_uid]) in uids]
+
+
+def session_of(pid):
+    """The session id of process `pid` (0 where it is gone)."""
+    try:
+        return int(Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[3])
+    except (OSError, IndexError, ValueError):
+        return 0
 
 
 def sandbox_processes(uids):
