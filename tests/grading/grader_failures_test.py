@@ -22,7 +22,7 @@ def exercise_tests(res):
 
 
 class FakeSandbox:
-    notes, user = [], "the test's user"
+    notes, user, mode = [], "the test's user", "bwrap"
 
     def protections(self):
         return "a fake sandbox (limits: none)"
