@@ -215,6 +215,10 @@ with tempfile.TemporaryDirectory(prefix="gradescope-pictures-") as tmp:
     check(held not in text, "6: a held-out test's picture is in results.json")
     check("room for no more" in first, "6: the output does not say that pictures were left out")
 
+# gtest prints the floats it is given with 17 digits; students read 6.
+short = grade.student_visible("WRONG: cosTheta 0.89999997615814209, tolerance 1.0000000000000001e-05.")
+check(short == "WRONG: cosTheta 0.9, tolerance 1e-05.", f"numbers are not shortened for students: {short}")
+
 # An __has_include that probes the hidden solutions' exercise.cpp: what the student sees neither names
 # it like their own file nor says that it exists ("Permission denied").
 probe = grade.student_visible("/autograder/source/solutions/09_shadow_volumes/exercise.cpp: Permission denied")

@@ -35,6 +35,7 @@ def status_of(failures):
 _BUILD_LINE = re.compile(r"^\s*(g?make(\[\d+\])?: |\[\s*\d+%\]|cd /|/usr/bin/(c\+\+|g\+\+|gcc|cc|clang|ld)\s|"
                          r"(/\S+/)?cmake (--build|-S|-E)\b|ninja: |Scanning dependencies|Consolidate compiler)")
 _STUDENT_FILE = re.compile(r"(?:[\w.+-]*/)*(labs/\d\d_[\w-]+/[^\s:'\"()\[\],]+)")
+_LONG_NUMBER = re.compile(r"(?<![\w.])-?\d+\.\d{8,}(?:[eE][-+]?\d+)?(?!\w)")
 _ANY_PATH = re.compile(r"(?<![\w.~-])(?:/|(?:\.{1,2}|[\w.+-]+)/)(?:[^\s/:'\"()\[\],]+/)+([^\s/:'\"()\[\],]+)")
 
 
@@ -53,6 +54,7 @@ def student_visible(text):
     out = "\n".join(lines)
     out = _STUDENT_FILE.sub(r"\1", out)
     out = _ANY_PATH.sub(lambda m: _shrunk(m.group(0), m.group(1)), out)
+    out = _LONG_NUMBER.sub(lambda m: f"{float(m.group(0)):.6g}", out)  # (gtest's 17 digits: 0.20000000298023224)
     return out.replace("Permission denied", "No such file or directory")
 
 
