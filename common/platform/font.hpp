@@ -19,13 +19,14 @@ std::filesystem::path findFontFile();
 /// Decodes UTF-8 into code points; a malformed byte becomes U+FFFD.
 std::u32string decodeUtf8(const std::string& text);
 
-/// `text` as coverage (0..255, one byte a pixel), `pixels` tall, rasterised on the CPU with no GL
-/// context: for pictures written by tests and tools. Empty (width 0) when the font cannot be read.
+/// A line of text as coverage (0..255, one byte a pixel), from rasterText().
 struct TextBitmap {
   int width = 0;           ///< in pixels
   int height = 0;          ///< in pixels (the font's line height)
   std::vector<uint8_t> a;  ///< width * height coverage values, row by row from the top
 };
+/// `text` in the font `ttf`, `pixels` tall, rasterised on the CPU with no GL context: for pictures
+/// written by tests and tools. Empty (width 0) when the font cannot be read.
 TextBitmap rasterText(const std::filesystem::path& ttf, const std::string& text, float pixels);
 
 /// A signed-distance atlas of DejaVu Sans: printable ASCII, Latin-1 and the few symbols captions
