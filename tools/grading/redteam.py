@@ -23,10 +23,10 @@ tools/grading/make_submissions.py. Each scores only what it earned:
 
 And the cheats of the weakest sandbox (Gradescope's container: no namespaces), which
 tests/grading/run_weak_class.sh grades with bubblewrap and unshare turned off (WB_SANDBOX_MODE=session):
-  proc_snoop             full, with C++ that reads every process's command line and environment it
-                         can and throws what holds a secret (the grader's seed, a path of the
-                         solutions or the held-out tests, the judge's held-out flag): it finds none,
-                         so full marks
+  proc_snoop             full, with C++ that reads the command line and environment of every
+                         process of the grading it can (grade.py and all it started) and throws what
+                         holds a secret (the grader's seed, a path of the solutions or the held-out
+                         tests, the judge's held-out flag): it finds none, so full marks
   results_daemon         the stubs, with a daemon (a session of its own, so a session's kill misses
                          it) that rewrites every tape and results.json it can reach for a minute: it
                          is killed when its run ends, so zero, and nothing forged is read
@@ -161,23 +161,47 @@ def sandbox_cheats(out, full, expect, cpp, glsl, the_labs, stubs_of, second_copy
 SNOOP = r"""
 #include <dirent.h>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 namespace {
-// Every other process's command line and environment that this one can read; what holds a secret.
+std::string readAll(const std::string& file) {
+  std::stringstream text;
+  text << std::ifstream(file).rdbuf();
+  return text.str();
+}
+// The command line and environment of every process of the grading that this one can read (the
+// grader, grade.py, and all it started: its judges and their lab runs; in a container that is every
+// process, and on a shared machine the others are not the grader's), and what of them holds a secret.
 std::string snooped() {
-  std::string found;
+  std::map<long, long> parent;
+  std::map<long, std::string> cmdline;
   if (DIR* proc = opendir("/proc")) {
     while (dirent* e = readdir(proc)) {
-      for (const char* part : {"/cmdline", "/environ"}) {
-        std::stringstream text;
-        text << std::ifstream(std::string("/proc/") + e->d_name + part).rdbuf();
-        for (const char* secret : {"WB_GRADE_SEED=", "/solutions/", "tests/hidden", "WB_HELD_OUT=1"})
-          if (text.str().find(secret) != std::string::npos) found += text.str().substr(0, 300) + "\\n";
-      }
+      const long pid = std::atol(e->d_name);
+      if (pid <= 0) continue;
+      const std::string stat = readAll(std::string("/proc/") + e->d_name + "/stat");
+      const auto close = stat.rfind(')');
+      if (close == std::string::npos) continue;
+      std::istringstream rest(stat.substr(close + 2));
+      std::string state;
+      rest >> state >> parent[pid];
+      cmdline[pid] = readAll(std::string("/proc/") + e->d_name + "/cmdline");
     }
     closedir(proc);
+  }
+  auto graders = [&](long pid) {
+    for (int depth = 0; pid > 1 && depth < 64; ++depth, pid = parent[pid])
+      if (cmdline[pid].find("tools/grading/grade.py") != std::string::npos) return true;
+    return false;
+  };
+  std::string found;
+  for (const auto& [pid, line] : cmdline) {
+    if (!graders(pid)) continue;
+    for (const std::string& text : {line, readAll("/proc/" + std::to_string(pid) + "/environ")})
+      for (const char* secret : {"WB_GRADE_SEED=", "/solutions/", "tests/hidden", "WB_HELD_OUT=1"})
+        if (text.find(secret) != std::string::npos) found += text.substr(0, 300) + "\\n";
   }
   return found;
 }
