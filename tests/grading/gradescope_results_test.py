@@ -215,6 +215,17 @@ with tempfile.TemporaryDirectory(prefix="gradescope-pictures-") as tmp:
     check(held not in text, "6: a held-out test's picture is in results.json")
     check("room for no more" in first, "6: the output does not say that pictures were left out")
 
+# 7. An extension's bonus points are said apart, never as a score above the maximum ("925 of 915").
+with tempfile.TemporaryDirectory(prefix="gradescope-bonus-") as tmp:
+    ext = {"id": "01.x", "title": "Extension", "file": "exercise.cpp", "points": 10, "extension": True}
+    bonus_lab = dict(lab, hidden_points={}, exercises=lab["exercises"] + [ext])
+    r = grade.Results(Path(tmp), "x", [bonus_lab], Sandbox([]))
+    for e in bonus_lab["exercises"]:
+        r.add(bonus_lab, e, True, [], [], [])
+    r.finish(1.0)
+    out = json.loads((Path(tmp) / "results.json").read_text())["output"]
+    check(out.startswith("37 of 37 points and 10 bonus points from extensions."), f"7: the bonus is not said apart: {out!r}")
+
 # gtest prints the floats it is given with 17 digits; students read 6.
 short = grade.student_visible("WRONG: cosTheta 0.89999997615814209, tolerance 1.0000000000000001e-05.")
 check(short == "WRONG: cosTheta 0.9, tolerance 1e-05.", f"numbers are not shortened for students: {short}")

@@ -163,13 +163,16 @@ class Results:
             total = sum(len(l["exercises"]) for l in self.labs)
             return f"Graded {done} of {total} exercises so far (grading stopped or is still running)."
         later = [x for x in self.entries if x["visibility"] != "visible" and x["points"] > 0 and not x["extension"]]
+        seen = [x for x in self.entries if x["visibility"] == "visible"] if later else self.entries
+        bonus = sum(x["score"] for x in seen if x["extension"])  # (on top of the maximum: said apart)
+        plus = f" and {bonus} bonus points from extensions" if bonus else ""
         if later:
-            seen = [x for x in self.entries if x["visibility"] == "visible"]
-            text = (f"{sum(x['score'] for x in seen)} of {sum(x['points'] for x in seen if not x['extension'])} "
-                    f"points in the tests shown now. Held-out tests decide {sum(x['points'] for x in later)} more "
-                    "points; they and the total are shown after the due date (or when grades are published).")
+            text = (f"{sum(x['score'] for x in seen if not x['extension'])} of "
+                    f"{sum(x['points'] for x in seen if not x['extension'])} points in the tests shown now{plus}. "
+                    f"Held-out tests decide {sum(x['points'] for x in later)} more points; they and the total are "
+                    "shown after the due date (or when grades are published).")
         else:
-            text = f"{self.score()} of {self.max_score} points."
+            text = f"{self.score() - bonus} of {self.max_score} points{plus}."
         return student_visible(text + "".join(f"\n\n**Note:** {p}." for p in self.problems))
 
     def write_json(self, partial, elapsed=0.0):

@@ -57,4 +57,7 @@ os.replace(tmp, zip_path)
 print(f"gradescope-bundle: wrote {zip_path} ({len(files)} tracked files)")
 print(f"gradescope-bundle: the assignment grades lab{'s' if len(chosen) > 1 else ''} {', '.join(chosen)}: "
       f"set its total to {points} points on Gradescope (extensions are bonus points on top)")
+print("gradescope-bundle: Gradescope's defaults are 768 MB, half a CPU and 10 minutes; docs/gradescope.md "
+      "gives the time and memory measured per assignment; grade one honest submission first, and raise the "
+      "autograder's memory or timeout where it comes near them")
 PY
