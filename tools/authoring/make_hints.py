@@ -31,6 +31,19 @@ def fields_of(mutant):
     return fields, hint
 
 
+def replacements(mutant):
+    """Every (find, replace) pair of a mutant, in order (a mistake may change several lines)."""
+    pairs, find = [], None
+    for line in mutant.read_text().splitlines():
+        key, _, value = line.partition(":")
+        if key == "find":
+            find = value.strip()
+        elif key == "replace" and find is not None:
+            pairs.append((find, value.strip()))
+            find = None
+    return pairs
+
+
 def describe(mutant):
     fields, hint = fields_of(mutant)
     return fields.get("exercise", ""), hint

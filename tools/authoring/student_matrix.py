@@ -20,7 +20,6 @@ but the mutant's (the grader draws each exercise's scenes with the reference for
 those blocked, which the summary must name as not known yet. The
 files are put back after each mutant, also when the run is stopped.
 """
-import json
 import os
 import re
 import shutil
@@ -33,17 +32,11 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tools" / "authoring"))
-from make_hints import fields_of  # noqa: E402  (one reader of .mutant files)
+from make_hints import fields_of, replacements  # noqa: E402  (one reader of .mutant files)
+from mutant_matrix import recorded_hint  # noqa: E402  (the hint ctest expects, the same here)
 
 STATUS = re.compile(r"^  (\d\d\.[0-9x])\s+(passes its tests|passes own tests|not implemented|error|wrong)\s")
 SUMMARY = re.compile(r"^  (\d+) of (\d+) exercises pass their tests", re.M)
-
-
-def recorded_hint(mutant):
-    hints = ROOT / "tests/hints" / f"{mutant.parent.name}.json"
-    if not hints.exists():
-        return ""
-    return next((h["hint"] for h in json.loads(hints.read_text())["hints"] if h["mutant"] == mutant.stem), "")
 
 
 def check(export, nn, timeout=600):
@@ -103,19 +96,6 @@ def judge(mutant, out):
     return {"caught": status == "wrong", "attributed": status == "wrong" and not others, "hint": hint,
             "score": score, "status": status, "others": others, "shown": shown, "summary": summary,
             "blocked": blocked}
-
-
-def replacements(mutant):
-    """Every (find, replace) pair of a mutant, in order (a mistake may change several lines)."""
-    pairs, find = [], None
-    for line in mutant.read_text().splitlines():
-        key, _, value = line.partition(":")
-        if key == "find":
-            find = value.strip()
-        elif key == "replace" and find is not None:
-            pairs.append((find, value.strip()))
-            find = None
-    return pairs
 
 
 def mutate(export, mutant):

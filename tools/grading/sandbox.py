@@ -295,7 +295,7 @@ def run_killable(cmd, timeout, cwd=None, env=None, started=None):
             room = KEEP - len(head)
             head += chunk[:room]
             if len(chunk) > room:
-                tail = (tail + chunk[max(room, 0):])[-KEEP:]
+                tail = (tail + chunk[room:])[-KEEP:]
     if not timed_out:
         try:
             proc.wait(timeout=max(0.1, deadline - time.monotonic()))
