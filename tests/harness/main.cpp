@@ -257,7 +257,7 @@ class CheckListener : public ::testing::EmptyTestEventListener {
   std::set<std::string> ownFailed_;              // the exercises that fail a test that draws no scene
   std::map<std::string, std::string> blockers_;  // what blocks each exercise's scene tests ("07.4", "09.2, 09.3")
   std::set<std::string> unblocked_;              // the exercises with a scene test that fails on its own
-  std::map<std::string, std::vector<std::string>> hints_;            // the known mistakes and pictures of each exercise's tests
+  std::map<std::string, std::vector<std::string>> hints_;  // the known mistakes and pictures of each exercise's tests
   std::vector<std::pair<std::string, wb::test::Diagnosis>> others_;  // failing tests of no one exercise
 };
 
