@@ -47,7 +47,7 @@ grep -q "student edition" "$readme" || fail "README.md is not the students' READ
 grep -q '^./workbook demo' "$readme" && grep -q '^./workbook test' "$readme" || fail "README.md lacks the quick start"
 grep -q '^| \[01\](labs/01_depth_map/README.md)' "$readme" || fail "README.md lacks the lab table"
 ! grep -q '^@' "$readme" || fail "README.md has a template line left: $(grep '^@' "$readme")"
-for word in --solution "workbook grade" "workbook golden" "workbook figures" gradescope make-submissions \
+for word in --solution "workbook grade" "workbook golden" "workbook figures" gradescope prairielearn make-submissions \
             export-student instructors.md; do
   ! grep -qi -- "$word" "$readme" || fail "README.md mentions '$word': $(grep -i -- "$word" "$readme" | head -1)"
 done
@@ -55,10 +55,10 @@ done
 # Its workbook: no instructor command in help, and each one refused with a clear message.
 help=$("$student/workbook" help)
 ! grep -q -- --solution <<<"$help" || fail "./workbook help offers --solution"
-for cmd in golden figures grade make-submissions gradescope-bundle export-student; do
+for cmd in golden figures grade make-submissions gradescope-bundle prairielearn-export export-student; do
   ! grep -qE "^ +$cmd( |$)" <<<"$help" || fail "./workbook help offers '$cmd'"
 done
-for cmd in "grade x" "golden 01" "gradescope-bundle" "make-submissions x" "export-student x" "figures 01"; do
+for cmd in "grade x" "golden 01" "gradescope-bundle" "prairielearn-export x" "make-submissions x" "export-student x" "figures 01"; do
   # shellcheck disable=SC2086
   if out=$("$student/workbook" $cmd 2>&1); then
     fail "./workbook $cmd ran in the student edition"

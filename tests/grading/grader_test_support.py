@@ -6,9 +6,17 @@ from pathlib import Path
 
 sys.dont_write_bytecode = True  # no __pycache__ in tools/
 ROOT = Path(__file__).resolve().parent.parent.parent
-_spec = importlib.util.spec_from_file_location("grade", ROOT / "tools/grading/grade.py")
-grade = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(grade)
+
+
+def load(path):
+    """A Python file of the grader's, loaded as a module."""
+    spec = importlib.util.spec_from_file_location(path.stem, path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+grade = load(ROOT / "tools/grading/grade.py")
 
 problems = []
 

@@ -7,7 +7,10 @@
 - weaker isolation (no network namespace) is in results.json for the instructor and in report.md;
 - flat uploads (exercise.cpp, exercise.glsl without folders) belong to the assignment's only lab,
   and are reported as ambiguous when it has several;
-- students in a batch get unique names (erin.smith.zip and erin.jones are two students)."""
+- students in a batch get unique names (erin.smith.zip and erin.jones are two students);
+- PrairieLearn's result made from the same results.json (tools/grading/prairielearn/results.py): a
+  score in [0, 1], the held-out tests as one test without their cases, pictures as images, no test
+  for instructors only, under 1 MB."""
 import base64
 import csv
 import json
@@ -18,7 +21,9 @@ import zipfile
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from grader_test_support import ROOT, check, finish, grade, problems  # noqa: E402
+from grader_test_support import ROOT, check, finish, grade, load, problems  # noqa: E402
+
+pl = load(ROOT / "tools/grading/prairielearn/results.py")
 
 
 # Gradescope's autograder specification, "Output format" (gradescope-autograders.readthedocs.io/en/latest/specs/).
@@ -96,6 +101,13 @@ with tempfile.TemporaryDirectory(prefix="gradescope-results-") as tmp:
     for leak in ("20", "13 of", "37"):
         check(not re.search(rf"(?<![\d.]){leak}(?![\d.])", res["output"]),
               f"1: the student-visible output gives away held-out points ({leak!r}): {res['output']!r}")
+    doc = pl.convert(res)
+    check(abs(doc["score"] - 20 / 37) < 1e-9 and doc["gradable"] and doc["message"].startswith("20 of 37 points"),
+          f"1: PrairieLearn's score is {doc['score']} ({doc['message']}), expected 20 of 37")
+    names = [t["name"] for t in doc["tests"]]
+    check(names == ["01.1 Light fit", "01.2 Spot light", "Held-out tests"], f"1: PrairieLearn's tests are {names}")
+    check(doc["tests"][-1]["points"] == 13 and doc["tests"][-1]["output"] == "01.1: passed",
+          f"1: PrairieLearn's held-out test is {doc['tests'][-1]}")
     # 2. No grader path, build command or absolute path in what students see.
     for bad in (str(ROOT), "build-grade", "/autograder", "/tmp/", "/usr/", "make[2]", "gmake", "/usr/bin/c++", "cd /"):
         check(bad not in seen, f"2: students see {bad!r}")
@@ -214,6 +226,15 @@ with tempfile.TemporaryDirectory(prefix="gradescope-pictures-") as tmp:
     held = base64.b64encode((out / "images" / "01_1_h_panels.png").read_bytes()).decode()[100:160]
     check(held not in text, "6: a held-out test's picture is in results.json")
     check("room for no more" in first, "6: the output does not say that pictures were left out")
+    doc = pl.convert(res)
+    shown = doc["tests"][0]
+    check(shown["images"] and all(i["url"].startswith("data:image/png;base64,iVBORw0KGgo") for i in shown["images"])
+          and "data:image" not in shown["output"] and "WRONG: visibility differs" in shown["output"],
+          f"6: PrairieLearn's test does not show the panels as images beside its text: {shown['output'][:300]}")
+    check(len(json.dumps(doc)) < 1_000_000 and held not in json.dumps(doc), "6: PrairieLearn's result is too big or "
+          "shows a held-out picture")
+    check(len(json.dumps(pl.fit(dict(doc, tests=[dict(shown, images=shown["images"] * 20)])))) < 1_000_000,
+          "6: PrairieLearn's result is not cut to 1 MB")
 
 # 7. An extension's bonus points are said apart, never as a score above the maximum ("925 of 915").
 with tempfile.TemporaryDirectory(prefix="gradescope-bonus-") as tmp:
@@ -225,6 +246,9 @@ with tempfile.TemporaryDirectory(prefix="gradescope-bonus-") as tmp:
     r.finish(1.0)
     out = json.loads((Path(tmp) / "results.json").read_text())["output"]
     check(out.startswith("37 of 37 points and 10 bonus points from extensions."), f"7: the bonus is not said apart: {out!r}")
+    doc = pl.convert(json.loads((Path(tmp) / "results.json").read_text()))
+    check(doc["score"] == 1.0 and doc["message"].startswith("37 of 37 points and 10 bonus points"),
+          f"7: PrairieLearn's score is {doc['score']} ({doc['message']}), expected 1.0 with the bonus said apart")
 
 # gtest prints the floats it is given with 17 digits; students read 6.
 short = grade.student_visible("WRONG: cosTheta 0.89999997615814209, tolerance 1.0000000000000001e-05.")

@@ -3,7 +3,9 @@
 got none, and showed "autograder failed"). A fake grade.py stands in for the grader and ends each
 way it can: killed before writing anything (out of memory), a crash part-way with some exercises
 graded, an exit with an error and nothing written, a normal end; and run_autograder itself killed at
-once (the container's limit). In seconds, no build."""
+once (the container's limit). PrairieLearn's run_job the same way, and with an image that has no
+workbook: its results.json must keep PrairieLearn's contract (a score in [0, 1]; not gradable, so the
+student keeps the attempt, only where nothing was graded). In seconds, no build."""
 import json
 import os
 import shutil
@@ -15,9 +17,10 @@ from pathlib import Path
 
 from grader_test_support import ROOT, check, finish
 
-PARTIAL = {"score": 10.0, "output": "Graded 1 of 2 exercises so far", "tests": [
+PARTIAL = {"score": 10.0, "output": "Graded 1 of 2 exercises so far", "extra_data": {"max_score": 20}, "tests": [
     {"name": "01.1 A", "number": "01.1", "score": 10.0, "max_score": 10, "status": "passed", "output": ""},
-    {"name": "Environment", "score": 0, "max_score": 0, "output": ""}]}
+    {"name": "Environment", "score": 0, "max_score": 0, "output": "", "tags": ["grading-environment"],
+     "visibility": "hidden"}]}
 FINAL = dict(PARTIAL, output="10 of 20 points.", execution_time=3.0)
 FAKES = {  # how the fake grader ends
     "killed": "import os, signal; os.kill(os.getpid(), signal.SIGKILL)",
@@ -42,6 +45,26 @@ def results(ag):
         return json.loads((ag / "results/results.json").read_text())
     except (OSError, ValueError) as e:
         return {"broken": str(e)}
+
+
+def prairielearn_job(tmp, fake):
+    """run_job with the fake grader in a stand-in image tree; the job's /grade in tmp."""
+    job, tree = tmp / f"pl-{fake}/grade", tmp / f"pl-{fake}/tree"
+    course = job / "serverFilesCourse/shadow-workbook/workbook"
+    for rel in ("tools/grading/prairielearn/results.py", "tools/grading/gradescope/finish_results.py",
+                "tools/grading/instructor_paths.txt", "labs/01_depth_map/exercises.json"):
+        (course / rel).parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy(ROOT / rel, course / rel)
+    (job / "student").mkdir()
+    if fake != "no image":
+        (tree / "tools/grading").mkdir(parents=True)
+        (tree / "tools/grading/grade.py").write_text(FAKES[fake] + "\n")
+    r = subprocess.run(["/bin/bash", str(ROOT / "tools/grading/prairielearn/run_job"), "01"], capture_output=True,
+                       text=True, env=dict(os.environ, WB_PL_GRADE=str(job), WB_PL_TREE=str(tree)), timeout=60)
+    try:
+        return json.loads((job / "results/results.json").read_text()), r.stdout
+    except (OSError, ValueError) as e:
+        return {"broken": str(e)}, r.stdout
 
 
 with tempfile.TemporaryDirectory(prefix="wb-results-") as tmp:
@@ -79,4 +102,20 @@ with tempfile.TemporaryDirectory(prefix="wb-results-") as tmp:
     doc = results(ag)
     check(doc.get("score") == 0 and "was stopped before it wrote any result" in doc.get("output", ""),
           f"killed at once: no provisional result: {doc}")
-finish("results.json on every exit path", "killed, crashed part-way, failed, finished, and the container killed")
+    for fake in ["no image"] + list(FAKES):
+        doc, log = prairielearn_job(tmp, fake)
+        score = doc.get("score")
+        check(isinstance(score, float) and 0 <= score <= 1, f"PrairieLearn, {fake}: no score in [0, 1]: {doc} {log}")
+        gradable, message = doc.get("gradable"), doc.get("message", "")
+        if fake in ("no image", "killed", "nothing"):
+            check(gradable is False and score == 0 and doc.get("format_errors"),
+                  f"PrairieLearn, {fake}: nothing graded, yet the attempt counts: {doc}")
+            check(fake != "killed" or "SIGKILL" in message, f"PrairieLearn, killed: not said: {message}")
+            check(fake != "no image" or "no workbook" in log, f"PrairieLearn, no image: the log does not say so: {log}")
+        elif fake == "partial":
+            check(gradable and score == 0.5 and "keep their scores" in message, f"PrairieLearn, partial: {doc}")
+        else:
+            check(gradable and score == 0.5 and message.startswith("10 of 20 points") and len(doc["tests"]) == 1,
+                  f"PrairieLearn, final: {doc}")
+finish("results.json on every exit path", "killed, crashed part-way, failed, finished, and the container killed; "
+       "PrairieLearn's job the same ways, and without its image")

@@ -4,6 +4,7 @@ import argparse
 import atexit
 import csv
 import concurrent.futures
+import json
 import os
 import re
 import stat
@@ -117,20 +118,56 @@ def salvage(out_dir, name, labs, sandbox, problem, elapsed):
                 "timing": {"build": 0.0, "tests": 0.0}, "problems": [problem]}
 
 
+HIDDEN_MODES = ROOT / "build-grade" / "hidden-modes.json"  # (while a grader runs: the modes it will put back)
+
+
 def hide_from_sandbox(paths):
     """Makes `paths` (the checkout's solutions, held-out tests, git history and other builds; the
     submissions and the results) unreadable to the sandbox users while grading runs, and puts their
-    modes back when it ends. Only the student edition in build-grade/wK stays in their reach."""
+    modes back when it ends. Only the student edition in build-grade/wK stays in their reach. The modes
+    to put back are kept in HIDDEN_MODES too: a grader that was killed (out of memory, a kill -9) cannot
+    put them back, so the next one does before it starts."""
+    record = restore_hidden_modes()
     modes = {}
     for p in paths:
         try:
             st = os.lstat(p)
             if not stat.S_ISLNK(st.st_mode):
-                modes[p] = stat.S_IMODE(st.st_mode)
-                os.chmod(p, modes[p] & ~0o077)
+                modes[p] = record.get(str(p), stat.S_IMODE(st.st_mode))
         except OSError:
             pass
-    atexit.register(lambda: [os.chmod(p, m) for p, m in modes.items() if p.exists()])
+    HIDDEN_MODES.parent.mkdir(parents=True, exist_ok=True)
+    HIDDEN_MODES.unlink(missing_ok=True)
+    with os.fdopen(os.open(HIDDEN_MODES, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600), "w") as f:  # (root's alone)
+        json.dump({"pid": os.getpid(), "modes": {str(p): m for p, m in modes.items()}}, f)
+    for p, m in modes.items():
+        os.chmod(p, m & ~0o077)
+
+    def put_back():
+        for p, m in modes.items():
+            if p.exists():
+                os.chmod(p, m)
+        HIDDEN_MODES.unlink(missing_ok=True)
+    atexit.register(put_back)
+
+
+def restore_hidden_modes():
+    """The modes a killed grader left in HIDDEN_MODES, put back; {} when there is none. Where that
+    grader still runs, its record is left alone, and its modes are returned as the ones to put back."""
+    try:
+        record = json.loads(HIDDEN_MODES.read_text())
+        pid, modes = int(record["pid"]), {str(p): int(m) for p, m in record["modes"].items()}
+    except (OSError, ValueError, KeyError, TypeError):
+        return {}
+    if pid != os.getpid() and Path(f"/proc/{pid}").exists():
+        return modes  # (a grader at work: nothing to repair)
+    for p, m in modes.items():
+        try:
+            os.chmod(p, m)
+        except OSError:
+            pass
+    log(f"grade: a grader was stopped before it could put back the modes of {len(modes)} folders; they are back")
+    return {}
 
 
 def main():

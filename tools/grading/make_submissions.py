@@ -31,7 +31,8 @@ The red team (cheats score zero; honest oddities score full marks):
   include_solutions    the stubs, with exercise.cpp including the solution's (relative and absolute
                        paths, where __has_include finds one): nothing to include, the stub is graded
   leak_secrets         full, with C++ that looks for the solutions, the held-out tests and the
-                       judge's build from its own path and throws what it finds: it finds nothing,
+                       judge's build from its own path, in Gradescope's /autograder/source and in
+                       PrairieLearn's /grade/serverFilesCourse, and throws what it finds: it finds nothing,
                        so full marks, and no output holds a line of them
   write_other          full, with C++ that tries to write a file into every folder it can reach
                        (other students' results, tapes, builds): full marks, and no such file
@@ -136,13 +137,18 @@ LEAKER = r"""
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 namespace {
-// Looks for the instructor's files above its own executable and throws whatever it can read.
+// Looks for the instructor's files above its own executable, and where Gradescope and PrairieLearn
+// keep them, and throws whatever it can read.
 void leakSecrets() {
   namespace fs = std::filesystem;
   std::error_code ec;
-  fs::path dir = fs::read_symlink("/proc/self/exe", ec).parent_path();
-  for (int up = 0; up < 8 && !dir.empty(); ++up, dir = dir.parent_path()) {
+  std::vector<fs::path> dirs = {"/autograder/source", "/grade/serverFilesCourse/shadow-workbook/workbook"};
+  for (fs::path d = fs::read_symlink("/proc/self/exe", ec).parent_path(); !d.empty() && dirs.size() < 10;
+       d = d.parent_path())
+    dirs.push_back(d);
+  for (const fs::path& dir : dirs) {
     for (const char* rel : {"solutions/@LAB@/exercise.cpp", "solutions/@LAB@/shaders/exercise.glsl",
                             "tests/hidden/@LAB@/heldout_test.cpp", "tests/hidden/@LAB@/scenes/heldout.json",
                             "tests/mutants", "build/mutants/@LAB@", "build-grade/judge", ".git/config"}) {

@@ -16,6 +16,7 @@ from .submission import load_labs, student_files
 # The framework's static libraries and the tests' main in a build folder (cmake/Framework.cmake).
 FRAMEWORK_LIBRARIES = ("libglad.a", "common/libwb_common.a", "tests/harness/libwb_testing.a",
                        "tests/harness/CMakeFiles/wb_testing_main.dir/main.cpp.o")
+FRAMEWORK_TARGETS = ["glad", "wb_common", "wb_testing", "wb_testing_main"]
 
 
 def instructor_paths():
@@ -188,6 +189,8 @@ class Workspace:
             run_checked(["cmake", "-S", str(ROOT), "-B", str(self.judge), "-DCMAKE_BUILD_TYPE=RelWithDebInfo"],
                         "configure the judge's build")
         targets = [t for lab in self.labs for t in (f"lab{lab['nn']}_solution", f"lab{lab['nn']}_solution_tests")]
+        if not (ROOT / "solutions").is_dir():  # a public image (PrairieLearn's): the framework alone, the
+            targets = FRAMEWORK_TARGETS  # solutions come with each job (tools/grading/prairielearn)
         run_checked(["cmake", "--build", str(self.judge_bin), "-j", str(jobs), "--target"] + targets,
                     "build the judge's build")
 

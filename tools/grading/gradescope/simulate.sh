@@ -27,35 +27,12 @@ while [ $# -gt 0 ]; do
 done
 [ -n "$subs" ] && [ -d "$subs" ] || die "usage: simulate.sh SUBMISSIONS [--labs 01,03] [--memory 768M] [--cpus 0.5] [--root DIR]"
 [ "$(id -u)" = 0 ] || die "run it as root: it makes a chroot, mounts and cgroups"
-bytes=$(numfmt --from=iec "${memory%B}") || die "--memory $memory: a size such as 768M"
-quota=$(awk -v c="$cpus" 'BEGIN { q = int(c * 100000); if (q < 1000) exit 1; print q }') || die "--cpus $cpus: such as 0.5"
+# shellcheck source=../sim_lib.sh
+source "$here/tools/grading/sim_lib.sh"
+sim_parse_limits "$memory" "$cpus"
 
 # 1. The root, once.
-if [ ! -x "$root/usr/bin/apt-get" ]; then
-  command -v debootstrap >/dev/null || apt-get install -y debootstrap >/dev/null
-  mirror=$( (grep -h '^URIs:' /etc/apt/sources.list.d/debian.sources /etc/apt/sources.list.d/*.sources 2>/dev/null |
-    awk '{ print $2 }' | grep -v -e security -e snapshot | head -1) || true)  # (the mirror apt uses)
-  echo "simulate: making a Debian 12 root in $root (${mirror:-deb.debian.org})"
-  debootstrap --variant=minbase bookworm "$root" "${mirror:-http://deb.debian.org/debian}" >"$root.debootstrap.log" 2>&1 ||
-    die "debootstrap failed: $root.debootstrap.log"
-fi
-cp /etc/resolv.conf "$root/etc/resolv.conf"
-[ -f /etc/apt/sources.list.d/debian.sources ] && cp /etc/apt/sources.list.d/debian.sources "$root/etc/apt/sources.list.d/"
-
-mounted=()
-userns=$(cat /proc/sys/user/max_user_namespaces)
-cleanup() {
-  { echo "$userns" >/proc/sys/user/max_user_namespaces; } 2>/dev/null || true
-  for ((k = ${#mounted[@]} - 1; k >= 0; k--)); do umount -l "${mounted[k]}" 2>/dev/null || true; done
-}
-trap cleanup EXIT
-bind() {  # SRC DEST [ro]
-  mkdir -p "$2" && mount --bind "$1" "$2" && mounted+=("$2")
-  [ "${3:-}" != ro ] || mount -o remount,bind,ro "$2"
-}
-bind /proc "$root/proc"
-bind /dev "$root/dev"
-mkdir -p "$root/dev/shm" "$root/tmp" && chmod 1777 "$root/tmp"
+sim_make_root
 
 # 2. /autograder as Gradescope lays it out: the zip in source/, run_autograder beside it.
 ag=$root/autograder
@@ -85,51 +62,12 @@ echo "simulate: setup.sh took $(($(date +%s) - t0)) s; build-grade takes $(du -s
 fi
 
 # 4. Each submission in a cgroup of its own, seen from inside as the container's (read-only).
-v2=0 && [ -f /sys/fs/cgroup/cgroup.controllers ] && v2=1
-group() {  # NAME: makes the cgroup, prints the folders to join
-  if [ "$v2" = 1 ]; then
-    echo "+memory +cpu" >/sys/fs/cgroup/cgroup.subtree_control 2>/dev/null || true
-    mkdir -p "/sys/fs/cgroup/$1" && echo "$bytes" >"/sys/fs/cgroup/$1/memory.max" &&
-      echo "$quota 100000" >"/sys/fs/cgroup/$1/cpu.max" && echo "/sys/fs/cgroup/$1"
-  else
-    mkdir -p "/sys/fs/cgroup/memory/$1" "/sys/fs/cgroup/cpu/$1"
-    echo "$bytes" >"/sys/fs/cgroup/memory/$1/memory.limit_in_bytes"
-    echo 100000 >"/sys/fs/cgroup/cpu/$1/cpu.cfs_period_us" && echo "$quota" >"/sys/fs/cgroup/cpu/$1/cpu.cfs_quota_us"
-    echo "/sys/fs/cgroup/memory/$1 /sys/fs/cgroup/cpu/$1"
-  fi
-}
-peak() {  # NAME: the group's peak memory in MiB
-  local f=/sys/fs/cgroup/$1/memory.peak
-  [ "$v2" = 1 ] || f=/sys/fs/cgroup/memory/$1/memory.max_usage_in_bytes
-  echo $(($(cat "$f" 2>/dev/null || echo 0) >> 20))
-}
-# No user namespaces, as in Docker (its seccomp profile refuses them). Where this machine will not
-# let the sysctl be changed, the grader is told to use the weakest mode, which is what it falls back
-# to in the container, and the table says so.
-mode_env=()
-if ! echo 0 2>/dev/null >/proc/sys/user/max_user_namespaces; then
-  echo "simulate: user namespaces cannot be turned off here (/proc/sys is read-only): WB_SANDBOX_MODE=session stands in"
-  mode_env=(env WB_SANDBOX_MODE=session)
-fi
-printf '\n| submission | score | wall (s) | peak (MiB) | what the student sees first |\n|---|---|---|---|---|\n'
+printf '\n| submission | score | wall (s) | peak (MiB) | killed for memory | what the student sees first |\n|---|---|---|---|---|---|\n'
 for sub in "$subs"/*; do
   name=$(basename "$sub") && [ "$name" != expected.json ] || continue
   find "$ag/submission" "$ag/results" -mindepth 1 -delete
   if [ -d "$sub" ]; then cp -r "$sub/." "$ag/submission/"; else cp "$sub" "$ag/submission/"; fi
-  cg="wbsim-$$-${name//[^A-Za-z0-9_]/_}"
-  read -r -a dirs <<<"$(group "$cg")"
-  views=()
-  for d in "${dirs[@]}"; do  # (the container's view of its own group, where the grader reads its limits)
-    if [ "$v2" = 1 ]; then view=$root/sys/fs/cgroup; else view=$root/sys/fs/cgroup/$(basename "$(dirname "$d")"); fi
-    bind "$d" "$view" ro && views+=("$view")
-  done
-  t0=$(date +%s.%N)
-  (
-    for d in "${dirs[@]}"; do echo "$BASHPID" >"$d/cgroup.procs"; done
-    exec setpriv --bounding-set=-sys_admin -- "${mode_env[@]}" chroot "$root" /autograder/run_autograder
-  ) >"$ag/run-$name.log" 2>&1 || true
-  wall=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
-  for view in "${views[@]}"; do umount -l "$view" 2>/dev/null || true; done
+  sim_contained "wbsim-$$-${name//[^A-Za-z0-9_]/_}" "$ag/run-$name.log" /autograder/run_autograder
   row=$(python3 - "$ag/results/results.json" <<'PY'
 import json, sys
 try:
@@ -140,8 +78,8 @@ except Exception as e:
     print(f"NO VALID results.json ({type(e).__name__}) |")
 PY
 )
-  echo "| $name | ${row%% | *} | $wall | $(peak "$cg") | ${row#* | } |"
+  # shellcheck disable=SC2154  # (wall, peak, ooms: set by sim_contained)
+  echo "| $name | ${row%% | *} | $wall | $peak | $ooms | ${row#* | } |"
   cp "$ag/results/results.json" "$ag/results-$name.json" 2>/dev/null || true
-  for d in "${dirs[@]}"; do rmdir "$d" 2>/dev/null || true; done
 done
 echo "simulate: logs and each results.json in $ag (run-NAME.log, results-NAME.json)"
