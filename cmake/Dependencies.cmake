@@ -4,7 +4,23 @@
 find_package(glfw3 3.3 REQUIRED)
 find_package(glm REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
-find_package(GTest REQUIRED)
+# GoogleTest: the system's package, or its sources built here with this build's compiler and standard
+# library (WB_GTEST_SOURCE_DIR, e.g. Debian's /usr/src/googletest): a build with libc++, the Mac's
+# standard library, cannot link a GoogleTest built with libstdc++ (tools/platforms/mac_profile.sh).
+set(WB_GTEST_SOURCE_DIR "" CACHE PATH "GoogleTest's sources, built here instead of the installed package")
+if(WB_GTEST_SOURCE_DIR)
+  set(BUILD_GMOCK OFF CACHE BOOL "" FORCE)
+  set(INSTALL_GTEST OFF CACHE BOOL "" FORCE)
+  add_subdirectory(${WB_GTEST_SOURCE_DIR} ${CMAKE_BINARY_DIR}/googletest EXCLUDE_FROM_ALL)
+  get_target_property(gtest_includes gtest INTERFACE_INCLUDE_DIRECTORIES)  # (its headers' warnings are not ours)
+  set_target_properties(gtest PROPERTIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES "${gtest_includes}")
+  if(NOT TARGET GTest::gtest)  # (GoogleTest 1.11 and later name them so themselves)
+    add_library(GTest::gtest ALIAS gtest)
+    add_library(GTest::gtest_main ALIAS gtest_main)
+  endif()
+else()
+  find_package(GTest REQUIRED)
+endif()
 # Embree 3 (Debian 12, Ubuntu 22.04) or 4 (Ubuntu 24.04, Homebrew, vcpkg): both export `embree`.
 find_package(embree CONFIG REQUIRED)
 

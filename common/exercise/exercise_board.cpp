@@ -88,9 +88,10 @@ void ExerciseBoard::probe() {
       const fs::path path = findShaderFile(file, shaderSearchPath());
       probedFiles_[path] = fs::last_write_time(path);
       const std::string text = readFile(path);
-      std::string broken, error;  // the exercise whose chunk does not compile, and why
+      std::string broken, error;             // the exercise whose chunk does not compile, and why
+      const int count = int(probes.size());  // (a lambda may not name a structured binding before C++20)
       auto run = [&](const std::string& t) {
-        return runGlslKernel(t, path, body, int(probes.size()), 1, {}, {dummy.id(), cube.id()});
+        return runGlslKernel(t, path, body, count, 1, {}, {dummy.id(), cube.id()});
       };
       std::vector<glm::vec4> r;
       try {

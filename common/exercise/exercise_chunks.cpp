@@ -54,11 +54,12 @@ std::set<std::string> changedChunks(const std::string& before, const std::string
   const auto a = splitChunks(before), b = splitChunks(after);
   std::set<std::string> changed;
   for (const auto& [id, text] : a) {
-    const auto same = std::find_if(b.begin(), b.end(), [&](const auto& c) { return c.first == id; });
+    const auto same = std::find_if(b.begin(), b.end(), [&wanted = id](const auto& c) { return c.first == wanted; });
     if (same == b.end() || same->second != text) changed.insert(id);
   }
   for (const auto& [id, text] : b)
-    if (std::none_of(a.begin(), a.end(), [&](const auto& c) { return c.first == id; })) changed.insert(id);
+    if (std::none_of(a.begin(), a.end(), [&wanted = id](const auto& c) { return c.first == wanted; }))
+      changed.insert(id);
   return changed;
 }
 
@@ -78,7 +79,7 @@ std::string withChunksFrom(const std::string& current, const std::string& lastGo
   size_t before = 0;  // the lines above the current chunk at hand
   bool swapped = false;
   for (const auto& [id, text] : splitChunks(current)) {
-    const auto g = std::find_if(good.begin(), good.end(), [&](const auto& c) { return c.first == id; });
+    const auto g = std::find_if(good.begin(), good.end(), [&wanted = id](const auto& c) { return c.first == wanted; });
     if (ids.count(id) && g != good.end()) {
       // (None before the preamble: it may hold #version, which must come first, and starts on line 1.)
       if (!id.empty()) out += lineDirective(goodBefore[size_t(g - good.begin())]);

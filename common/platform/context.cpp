@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <mutex>
+#include <string>
 
 namespace wb {
 namespace {
@@ -32,9 +33,21 @@ void APIENTRY onGlDebug(GLenum source, GLenum type, GLuint, GLenum severity, GLs
   }
 }
 
+// Core in 4.3, KHR_debug before: macOS's 4.1 has neither, and then GL errors go unreported. Mesa
+// cannot turn the extension off, so WB_GL_NO_KHR_DEBUG=1 takes it as missing, to run that path here.
+bool hasDebugOutput() {
+  const char* off = std::getenv("WB_GL_NO_KHR_DEBUG");
+  return GLAD_GL_KHR_debug && !(off && std::string(off) == "1");  // (glad sets it where the context lists it)
+}
+
 void installDebugOutput() {
-  // Core in 4.3, KHR_debug before: macOS's 4.1 has neither, and then GL errors go unreported.
-  if (!GLAD_GL_KHR_debug) return;  // (glad sets it where the context lists the extension)
+  if (!hasDebugOutput()) {
+    static std::once_flag said;
+    std::call_once(said, [] {
+      std::fprintf(stderr, "GL: no KHR_debug here (as on macOS): OpenGL errors are not reported as they happen\n");
+    });
+    return;
+  }
   glEnable(GL_DEBUG_OUTPUT);
   glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);       // the callback runs inside the failing call
   glDebugMessageCallback(onGlDebug, nullptr);  // gl41-optional

@@ -97,8 +97,10 @@ void LabHost::startPresenter() {
 
 // Presenter mode: Page Down / Right the next step, Page Up / Left the one before, Escape leaves.
 void LabHost::stepKeys(const std::function<bool(int)>& pressed) {
-  const bool next = pressed(GLFW_KEY_PAGE_DOWN) | pressed(GLFW_KEY_RIGHT);
-  const bool back = pressed(GLFW_KEY_PAGE_UP) | pressed(GLFW_KEY_LEFT);
+  // Every key is read (not ||'s short cut): pressed() keeps each key's last state, for its edges.
+  const bool pageDown = pressed(GLFW_KEY_PAGE_DOWN), right = pressed(GLFW_KEY_RIGHT);
+  const bool pageUp = pressed(GLFW_KEY_PAGE_UP), left = pressed(GLFW_KEY_LEFT);
+  const bool next = pageDown || right, back = pageUp || left;
   const bool leave = pressed(GLFW_KEY_ESCAPE);
   if (!presenter_ || !(next || back || leave)) return;
   const int k = leave ? 0 : std::clamp(step_ + (next ? 1 : -1), 1, presenter_->count());

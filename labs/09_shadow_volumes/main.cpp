@@ -181,9 +181,9 @@ class VolumeLab : public wb::Lab {
     std::vector<bool> zfail(scene.objects.size(), method == 2);
     for (size_t k = 0; k < scene.objects.size() && method == 0; ++k) {
       if (!scene.objects[k].castsVolume) continue;
-      const auto [lo, hi] = bounds[k];
+      const auto& box = bounds[k];
       bool inside = true;  // (a failed call leaves the safe answer)
-      attempt("09.6", inside, [&] { return lab09::nearPlaneMayBeShadowed(quad, l, lo, hi); });
+      attempt("09.6", inside, [&] { return lab09::nearPlaneMayBeShadowed(quad, l, box.first, box.second); });
       zfail[k] = inside;
     }
     return zfail;

@@ -4,7 +4,8 @@ does it), each time followed by what run_autograder does next (finish_results.py
 code): every results.json is valid and says what happened; what was graded keeps its score and nothing
 scores more than its maximum; the modes the grader took from the checkout come back at the next start;
 and an uninterrupted grading of the same submission in the same tree then gets full marks (a kill
-mid-build must not leave an object that make takes as up to date). Then, where this machine lets a
+mid-build must not leave an object that make takes as up to date; a first whole grading times
+the kills, so they fall anywhere in it). Then, where this machine lets a
 cgroup be made, the grader starved: a memory limit of 300 MB with a student's exercise that touches
 600 MB: the kernel stops the student's run, not the grader, and only that exercise is lost.
 Usage: grader_killed_test.py BUILD_DIR OUT_DIR [SEED] (WB_KILL_SEED too; the seed is printed)."""
@@ -81,10 +82,23 @@ def results_of(folder, code):
         return {"broken": str(e)}
 
 
+def whole(name):
+    """The submission graded without a kill: (its results, the seconds it took)."""
+    t0 = time.time()
+    r = subprocess.run(GRADE + ["--out", str(out / name)], capture_output=True, text=True)
+    doc = results_of(out / name, r.returncode)
+    check(doc.get("score") == 100, f"{name}: the full submission scores {doc.get('score')}: {doc.get('output')}\n"
+          f"{r.stderr[-3000:]}")
+    return doc, time.time() - t0
+
+
+# How long a whole grading takes, so the kills fall anywhere in it: the preparation, the build, the runs.
+_, seconds = whole("whole-before")
+print(f"uninterrupted: {seconds:.1f} s")
 for k in range(3):
     folder = out / f"killed-{k}"
     folder.mkdir()
-    at = rng.uniform(0.5, 12.0)
+    at = rng.uniform(0.05, 1.0) * seconds
     proc = subprocess.Popen(GRADE + ["--out", str(folder)], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     time.sleep(at)
     finished = proc.poll() is not None
@@ -98,33 +112,33 @@ for k in range(3):
     check(abs(doc.get("score", -1) - sum(t["score"] for t in doc.get("tests", []))) < 1e-6,
           f"kill {k}: the score is not the sum of its tests: {doc.get('score')}")
     if not finished:
-        check("Grading did not finish" in doc.get("output", "") and "SIGKILL" in doc.get("output", ""),
+        check("Grading did not finish" in doc.get("output", "") and "SIGKILL" in doc.get("output", "")
+              and ("keep their scores" in doc["output"]) == bool(tests),
               f"kill {k} at {at:.1f} s: the student is not told that grading was killed: {doc.get('output')}")
     print(f"kill {k} at {at:.1f} s: {'finished first' if finished else 'killed'}, {len(tests)} exercises graded, "
           f"score {doc.get('score')}")
 
 # The same submission, uninterrupted, in the tree the kills left.
-folder = out / "whole"
-r = subprocess.run(GRADE + ["--out", str(folder)], capture_output=True, text=True)
-doc = results_of(folder, r.returncode)
-check(doc.get("score") == 100, f"after the kills, the full submission scores {doc.get('score')}: {doc.get('output')}\n"
-      f"{r.stderr[-3000:]}")
+doc, _ = whole("whole-after")
 modes_after = {p.name: p.stat().st_mode for p in ROOT.iterdir() if not p.is_symlink()}
 changed = {n: (oct(modes_before[n]), oct(m)) for n, m in modes_after.items() if n in modes_before and m != modes_before[n]}
 check(not changed, f"the checkout's modes were not put back after the kills: {changed}")
-print(f"uninterrupted: score {doc.get('score')}")
+print(f"uninterrupted after the kills: score {doc.get('score')}")
 
 
 def cgroup(limit):
-    """A cgroup (v2) with a memory limit and no swap, or None where this machine lets none be made."""
-    group = Path(f"/sys/fs/cgroup/wb-starved-{os.getpid()}")
+    """A memory cgroup (v2, or v1's memory controller) with a memory limit and no swap, or None where
+    this machine lets none be made."""
+    v2 = Path("/sys/fs/cgroup/cgroup.controllers").exists()
+    group = Path(f"/sys/fs/cgroup{'' if v2 else '/memory'}/wb-starved-{os.getpid()}")
     try:
-        if "memory" not in Path("/sys/fs/cgroup/cgroup.subtree_control").read_text():
+        if v2 and "memory" not in Path("/sys/fs/cgroup/cgroup.subtree_control").read_text():
             Path("/sys/fs/cgroup/cgroup.subtree_control").write_text("+memory")
         group.mkdir()
-        (group / "memory.max").write_text(str(limit))
-        if (group / "memory.swap.max").exists():
-            (group / "memory.swap.max").write_text("0")
+        (group / ("memory.max" if v2 else "memory.limit_in_bytes")).write_text(str(limit))
+        swap = group / ("memory.swap.max" if v2 else "memory.memsw.limit_in_bytes")
+        if swap.exists():
+            swap.write_text("0" if v2 else str(limit))
         return group
     except OSError:
         return None
@@ -136,7 +150,7 @@ import submission_tree  # noqa: E402
 
 group = cgroup(300 << 20)
 if group is None:
-    print("starved: skipped (no cgroup v2 with a memory controller can be made here; the stand-in,"
+    print("starved: skipped (no memory cgroup can be made here; the stand-in,"
           " tools/grading/gradescope/simulate.sh --memory 300M, is the way to try it)")
 else:
     sub = out / "subs/full"

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 namespace fs = std::filesystem;
 
@@ -134,8 +135,9 @@ std::string plotSweep(const std::string& name, const std::string& title, const s
   const int width = 560, height = 370, left = 72, right = 20, top = 64, bottom = 50;
   std::vector<double> xs;
   for (const auto& p : points) xs.push_back(p.x);
-  const auto [x0, x1] = range(xs, 0.04);
-  const auto [y0, y1] = valueRange(points);
+  double x0, x1, y0, y1;  // (not structured bindings: the lambdas below may not name those before C++20)
+  std::tie(x0, x1) = range(xs, 0.04);
+  std::tie(y0, y1) = valueRange(points);
   auto px = [&](double x) { return left + (x - x0) / (x1 - x0) * (width - left - right); };
   auto py = [&](double y) {  // (a value that is not finite is drawn on the frame's edge)
     const double v = std::isnan(y) ? y1 : std::clamp(y, y0, y1);

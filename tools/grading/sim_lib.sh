@@ -5,6 +5,9 @@
 # shellcheck shell=bash disable=SC2034,SC2154
 # (SC2034, SC2154: root, bytes and quota come from the caller; wall, peak and ooms go to it)
 
+# shellcheck source=../workbook/packages.sh
+source "$(dirname "${BASH_SOURCE[0]}")/../workbook/packages.sh"
+
 sim_parse_limits() {  # MEMORY CPUS: sets bytes and quota
   bytes=$(numfmt --from=iec "${1%B}") || die "--memory $1: a size such as 768M"
   quota=$(awk -v c="$2" 'BEGIN { q = int(c * 100000); if (q < 1000) exit 1; print q }') || die "--cpus $2: such as 0.5"
@@ -14,8 +17,7 @@ sim_make_root() {  # once: a Debian 12 minbase root in $root, with this machine'
   if [ ! -x "$root/usr/bin/apt-get" ]; then
     command -v debootstrap >/dev/null || apt-get install -y debootstrap >/dev/null
     local mirror
-    mirror=$( (grep -h '^URIs:' /etc/apt/sources.list.d/debian.sources /etc/apt/sources.list.d/*.sources 2>/dev/null |
-      awk '{ print $2 }' | grep -v -e security -e snapshot | head -1) || true)  # (the mirror apt uses)
+    mirror=$(apt_mirror || true)  # (tools/workbook/packages.sh)
     echo "simulate: making a Debian 12 root in $root (${mirror:-deb.debian.org})"
     debootstrap --variant=minbase bookworm "$root" "${mirror:-http://deb.debian.org/debian}" >"$root.debootstrap.log" 2>&1 ||
       die "debootstrap failed: $root.debootstrap.log"
@@ -63,10 +65,10 @@ sim_group() {  # NAME: makes the cgroup, prints the folders to join
 }
 
 sim_peak() {  # NAME: the group's peak memory in MiB (page cache included), and its processes the
-  # kernel killed for memory (cgroup v2's memory.events; v1's memory.oom_control counts none: "?")
-  local f=/sys/fs/cgroup/$1/memory.peak kills
-  [ "$v2" = 1 ] || f=/sys/fs/cgroup/memory/$1/memory.max_usage_in_bytes
-  kills=$(awk '$1 == "oom_kill" { print $2 }' "/sys/fs/cgroup/$1/memory.events" 2>/dev/null)
+  # kernel killed for memory (v2's memory.events, v1's memory.oom_control; "?" where it has no count)
+  local f=/sys/fs/cgroup/$1/memory.peak events=/sys/fs/cgroup/$1/memory.events kills
+  [ "$v2" = 1 ] || { f=/sys/fs/cgroup/memory/$1/memory.max_usage_in_bytes; events=/sys/fs/cgroup/memory/$1/memory.oom_control; }
+  kills=$(awk '$1 == "oom_kill" { print $2 }' "$events" 2>/dev/null)
   echo "$(($(cat "$f" 2>/dev/null || echo 0) >> 20)) ${kills:-?}"
 }
 

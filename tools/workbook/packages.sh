@@ -100,3 +100,14 @@ install_packages() {
   missing=$(missing_packages "$@")
   [ -z "$missing" ] || { echo "workbook: still missing after apt-get: $missing" >&2; exit 1; }
 }
+
+# The Debian mirror apt is configured to use (deb822 .sources files or one-line .list files), less
+# the security archive and snapshots; empty where apt names none. For tools that fetch from Debian
+# themselves (debootstrap, a deb-src line), so they work wherever apt does.
+apt_mirror() {
+  {
+    grep -h '^URIs:' /etc/apt/sources.list.d/*.sources 2>/dev/null | awk '{ for (i = 2; i <= NF; i++) print $i }'
+    grep -h '^deb ' /etc/apt/sources.list /etc/apt/sources.list.d/*.list 2>/dev/null |
+      awk '{ for (i = 2; i <= NF; i++) if ($i ~ /^[a-z+]+:\/\//) { print $i; break } }'
+  } | grep -v -e security -e snapshot | head -1
+}

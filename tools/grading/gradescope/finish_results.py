@@ -62,7 +62,8 @@ def final(out, code):
     elif not finished:  # part-way: what was graded keeps its score
         graded = [t for t in doc.get("tests", []) if t.get("number")]
         doc["output"] = (f"Grading did not finish: {why}. The {len(graded)} exercises graded before that keep "
-                         f"their scores; the others were not graded and score 0. {ASK}")
+                         f"their scores; the others were not graded and score 0. {ASK}" if graded else
+                         f"Grading did not finish: {why}, before any exercise was graded. {ASK}")
         doc["score"] = sum(float(t.get("score", 0)) for t in doc.get("tests", []))
     doc.get("extra_data", {}).pop(PROVISIONAL, None)
     write(out, doc)

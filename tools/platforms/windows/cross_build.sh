@@ -19,9 +19,14 @@ SUDO=""; [ "$(id -u)" = 0 ] || SUDO=sudo
 step() { echo "== cross_build: $*"; }
 
 step "packages"
+# shellcheck source=../../workbook/packages.sh
+source "$ROOT/tools/workbook/packages.sh"  # (apt_mirror)
 if ! grep -rqs "^Types: deb-src" /etc/apt/sources.list.d/ && ! grep -qs "^deb-src" /etc/apt/sources.list; then
-  printf 'Types: deb-src\nURIs: http://deb.debian.org/debian\nSuites: bookworm\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' |
-    $SUDO tee /etc/apt/sources.list.d/wb-debsrc.sources >/dev/null
+  mirror=$(apt_mirror) || true
+  [ -n "$mirror" ] || { echo "cross_build: apt names no Debian mirror to take the sources from" >&2; exit 1; }
+  suite=$(. /etc/os-release && echo "${VERSION_CODENAME:-bookworm}")
+  printf 'Types: deb-src\nURIs: %s\nSuites: %s\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' \
+    "$mirror" "$suite" | $SUDO tee /etc/apt/sources.list.d/wb-debsrc.sources >/dev/null
   $SUDO apt-get update -qq
 fi
 need=(g++-mingw-w64-x86-64-posix gcc-mingw-w64-x86-64-posix binutils-mingw-w64-x86-64 mingw-w64-x86-64-dev
