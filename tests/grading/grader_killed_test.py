@@ -7,7 +7,9 @@ and an uninterrupted grading of the same submission in the same tree then gets f
 mid-build must not leave an object that make takes as up to date; a first whole grading times
 the kills, so they fall anywhere in it). Then, where this machine lets a
 cgroup be made, the grader starved: a memory limit of 300 MB with a student's exercise that touches
-600 MB: the kernel stops the student's run, not the grader, and only that exercise is lost.
+600 MB: the kernel stops the student's run, not the grader, and only that exercise is lost. Last,
+a time limit on the whole job (--time-limit, as PrairieLearn's run_job sets it) holds against an
+endless loop, and the student is told.
 Usage: grader_killed_test.py BUILD_DIR OUT_DIR [SEED] (WB_KILL_SEED too; the seed is printed)."""
 import json
 import os
@@ -176,6 +178,20 @@ else:
     check(lost == ["01.1", "01.1"] or lost == ["01.1"], f"starved: the exercises lost are {lost}, expected 01.1 alone")
     check("memory" in out01, f"starved: 01.1's output does not say that it ran out of memory: {out01[:500]}")
     print(f"starved at 300 MB: score {doc.get('score')}, lost {lost}")
+
+# A job's time limit (--time-limit, PrairieLearn's run_job): an endless loop cannot keep the grader
+# past it; the runs after it are cut short, and the student is told.
+subprocess.run([sys.executable, "-B", str(ROOT / "tools/grading/make_submissions.py"), str(out / "loop"), "--labs", "01",
+                "--only", "endless_loop_cpp"], check=True, capture_output=True)
+t0 = time.time()
+r = subprocess.run(GRADE[:3] + [str(out / "loop/endless_loop_cpp")] + GRADE[4:] + ["--out", str(out / "limited"),
+                   "--time-limit", "12"], capture_output=True, text=True)
+took = time.time() - t0
+doc = results_of(out / "limited", r.returncode)
+check(r.returncode == 0 and took < 12 + 30, f"time limit: the grader took {took:.0f} s for a limit of 12 s "
+      f"(exit {r.returncode})\n{r.stderr[-2000:]}")
+check("time limit of the whole job" in doc.get("output", ""), f"time limit: not said: {doc.get('output')}")
+print(f"a 12 s time limit with an endless loop: {took:.0f} s, score {doc.get('score')}")
 
 finish("the grader killed at random points", f"3 kills (seed {seed}), valid results each time, full marks after, "
        "and starved of memory")

@@ -106,8 +106,14 @@ with tempfile.TemporaryDirectory(prefix="gradescope-results-") as tmp:
           f"1: PrairieLearn's score is {doc['score']} ({doc['message']}), expected 20 of 37")
     names = [t["name"] for t in doc["tests"]]
     check(names == ["01.1 Light fit", "01.2 Spot light", "Held-out tests"], f"1: PrairieLearn's tests are {names}")
-    check(doc["tests"][-1]["points"] == 13 and doc["tests"][-1]["output"] == "01.1: passed",
-          f"1: PrairieLearn's held-out test is {doc['tests'][-1]}")
+    check(doc["tests"][-1]["points"] == 13 and doc["tests"][-1]["output"] == "",
+          f"1: PrairieLearn's held-out test names exercises, or lacks its points: {doc['tests'][-1]}")
+    detail = pl.convert(res, "exercises")["tests"][-1]
+    check(detail["output"] == "01.1: passed", f"1: PrairieLearn's held-out test, exercises asked for: {detail}")
+    salvaged = tmp / "salvaged"
+    grade.salvage(salvaged, "x", [lab], Sandbox([]), "the grader could not unpack its tree", 1.0)
+    doc = pl.convert(json.loads((salvaged / "results.json").read_text()))
+    check(doc["gradable"] is False and doc["score"] == 0, f"1: a grader's fault costs PrairieLearn's attempt: {doc}")
     # 2. No grader path, build command or absolute path in what students see.
     for bad in (str(ROOT), "build-grade", "/autograder", "/tmp/", "/usr/", "make[2]", "gmake", "/usr/bin/c++", "cd /"):
         check(bad not in seen, f"2: students see {bad!r}")

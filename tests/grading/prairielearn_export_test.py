@@ -40,7 +40,8 @@ with tempfile.TemporaryDirectory(prefix="wb-prairielearn-") as tmp:
         check(info.get("gradingMethod") == "External" and opts.get("enabled") and opts.get("image") == "course/grader:1",
               f"{q.parent.name}: not an external-grading question of the image asked for: {info}")
         check(0 < opts.get("timeout", 0) <= 600, f"{q.parent.name}: timeout {opts.get('timeout')} (PrairieLearn: <= 600)")
-        check(opts.get("entrypoint") == ["/bin/bash", "/grade/serverFilesCourse/shadow-workbook/run_job", q.parent.name[:2]]
+        check(opts.get("entrypoint") == ["/bin/bash", "/grade/serverFilesCourse/shadow-workbook/run_job", q.parent.name[:2],
+                                         str(opts.get("timeout")), "total"]
               and opts.get("serverFilesCourse") == ["shadow-workbook/"], f"{q.parent.name}: entrypoint {opts}")
         names = re.search(r'file-names="([^"]*)"', (q.parent / "question.html").read_text())
         want = sorted({Path(e["file"]).name for e in lab["exercises"]})

@@ -56,11 +56,14 @@ def prairielearn_job(tmp, fake):
         (course / rel).parent.mkdir(parents=True, exist_ok=True)
         shutil.copy(ROOT / rel, course / rel)
     (job / "student").mkdir()
+    (job / "shared/shadow-workbook/workbook/solutions").mkdir(parents=True)  # (PrairieLearn's older copy)
     if fake != "no image":
         (tree / "tools/grading").mkdir(parents=True)
         (tree / "tools/grading/grade.py").write_text(FAKES[fake] + "\n")
     r = subprocess.run(["/bin/bash", str(ROOT / "tools/grading/prairielearn/run_job"), "01"], capture_output=True,
                        text=True, env=dict(os.environ, WB_PL_GRADE=str(job), WB_PL_TREE=str(tree)), timeout=60)
+    check(r.returncode == 0, f"PrairieLearn, {fake}: run_job exited {r.returncode}: PrairieLearn would read no "
+          f"results.json\n{r.stdout}")
     try:
         return json.loads((job / "results/results.json").read_text()), r.stdout
     except (OSError, ValueError) as e:
@@ -107,13 +110,17 @@ with tempfile.TemporaryDirectory(prefix="wb-results-") as tmp:
         score = doc.get("score")
         check(isinstance(score, float) and 0 <= score <= 1, f"PrairieLearn, {fake}: no score in [0, 1]: {doc} {log}")
         gradable, message = doc.get("gradable"), doc.get("message", "")
+        check(not (tmp / f"pl-{fake}/grade/shared").exists() and (os.geteuid() != 0 or
+              (tmp / f"pl-{fake}/grade").stat().st_mode & 0o077 == 0),
+              f"PrairieLearn, {fake}: /grade (with the solutions) is left in the student's reach")
         if fake in ("no image", "killed", "nothing"):
             check(gradable is False and score == 0 and doc.get("format_errors"),
                   f"PrairieLearn, {fake}: nothing graded, yet the attempt counts: {doc}")
             check(fake != "killed" or "SIGKILL" in message, f"PrairieLearn, killed: not said: {message}")
             check(fake != "no image" or "no workbook" in log, f"PrairieLearn, no image: the log does not say so: {log}")
         elif fake == "partial":
-            check(gradable and score == 0.5 and "keep their scores" in message, f"PrairieLearn, partial: {doc}")
+            check(gradable and score == 0.5 and "10 of 20 points from the 1 exercise graded" in message,
+                  f"PrairieLearn, partial: {doc}")
         else:
             check(gradable and score == 0.5 and message.startswith("10 of 20 points") and len(doc["tests"]) == 1,
                   f"PrairieLearn, final: {doc}")

@@ -191,7 +191,11 @@ def main():
                     help="judge with this existing build of the checkout (./workbook build's build/) instead of "
                          "building one in build-grade/judge: saves the framework's compile")
     ap.add_argument("--name", help="the student's name in the reports (default: the submission's name)")
+    ap.add_argument("--time-limit", type=int, metavar="S",
+                    help="no run goes on past S seconds after the grader started: a grading service's limit on "
+                         "the whole job, less a margin (PrairieLearn's run_job sets it)")
     args = ap.parse_args()
+    deadline = time.time() + args.time_limit if args.time_limit else None
     only = [x.strip().zfill(2) for x in args.labs.split(",")] if args.labs else None
     labs = load_labs(only)
     sandbox = Sandbox()
@@ -243,7 +247,7 @@ def main():
     def grade_one(ws, sub):
         name, dest = where(sub)
         cores = max(1, available_cpus() // workers)
-        return Grader(ws, labs, sandbox, args.timeout, cores, args.build_timeout).grade(sub, dest, name)
+        return Grader(ws, labs, sandbox, args.timeout, cores, args.build_timeout, deadline).grade(sub, dest, name)
 
     def fail_one(sub, problem, elapsed):
         name, dest = where(sub)

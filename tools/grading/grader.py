@@ -41,6 +41,10 @@ def runner_stopped(code, out, timed_out, timeout, cpu_seconds=0):
     return []
 
 
+# Where a run was cut short by the whole job's time limit (--time-limit), not by its own.
+CUT_SHORT = "the job's time ran out here: an endless loop, or very slow code, somewhere in this submission?"
+
+
 def named_limit(message):
     """A judge's failure message with the sandbox's limit named where the student's code ran into one
     (an exception std::bad_alloc recorded by the runner: the memory limit)."""
@@ -49,9 +53,12 @@ def named_limit(message):
 
 
 class Grader:
-    def __init__(self, ws, labs, sandbox, timeout, jobs, build_timeout=DEFAULT_BUILD_TIMEOUT):
+    def __init__(self, ws, labs, sandbox, timeout, jobs, build_timeout=DEFAULT_BUILD_TIMEOUT, deadline=None):
         self.ws, self.labs, self.sandbox, self.timeout = ws, labs, sandbox, timeout
         self.build_timeout = build_timeout  # seconds for one build of the submission's code
+        # A grading service's limit on the whole job (time.time() at which to stop), or None: no run
+        # may go past it, so the results are written before the service kills the job.
+        self.deadline, self.deadline_reached = deadline, False
         self.build_jobs = max(1, jobs)  # cores for this submission
         # Exercises graded at once: twice the cores, since a runner or a judge is a short process that
         # waits for its start-up and files for a good part of its time (on 2 cores, 6 submissions of
@@ -67,6 +74,13 @@ class Grader:
         # the runners, and the judge (its planning passes and renders).
         self.spent, self.spent_lock = {"compile": 0.0, "runner": 0.0, "judge": 0.0}, threading.Lock()
 
+    def limit(self, seconds):
+        """`seconds` for a run, cut to what is left before the deadline (1 s at least)."""
+        if self.deadline is None or self.deadline - time.time() >= seconds:
+            return seconds
+        self.deadline_reached = True
+        return max(1, int(self.deadline - time.time()))
+
     def count(self, what, since):
         with self.spent_lock:
             self.spent[what] += time.time() - since
@@ -77,15 +91,17 @@ class Grader:
         a huge file) is killed with its compilers and fails with a message that starts with
         BUILD_TIMED_OUT."""
         # The builder user compiles, in the sandbox: no network, no view of the solutions.
-        t0 = time.time()
+        t0, seconds = time.time(), self.limit(self.build_timeout)
         code, out, timed_out = self.sandbox.run(
-            self.ws.build_command(self.build_jobs, labs), self.build_timeout, env=minimal_env(HOME="/tmp"),
+            self.ws.build_command(self.build_jobs, labs), seconds, env=minimal_env(HOME="/tmp"),
             uid=self.ws.builder, **self.ws.builder_binds())
         self.count("compile", t0)
         if timed_out:
-            self.build_timeouts += 1
             self.ws.after_killed_build(labs)
-            return False, (f"{BUILD_TIMED_OUT} after {self.build_timeout} s and was stopped (compile-time work "
+            if seconds < self.build_timeout:
+                return False, f"{BUILD_TIMED_OUT} at the time limit of the whole job ({CUT_SHORT})"
+            self.build_timeouts += 1
+            return False, (f"{BUILD_TIMED_OUT} after {seconds} s and was stopped (compile-time work "
                            "that takes too long, such as deep template or constexpr recursion, or a huge file?)")
         return code == 0, out
 
@@ -175,26 +191,32 @@ class Grader:
         what = ["--requests", str(self.plan(lab, judge, gfilter, judged, jenv, tape, uid))] if held_out \
             else [f"--gtest_filter={gfilter}"]
         binds = self.ws.runner_binds(tape, held_out)
-        t0 = time.time()
-        code, out, timed_out = self.sandbox.run([str(runner)] + what + ["--runner", str(tape)], self.timeout,
+        t0, seconds = time.time(), self.limit(self.timeout)
+        code, out, timed_out = self.sandbox.run([str(runner)] + what + ["--runner", str(tape)], seconds,
                                                 env=env, cwd=tape, uid=uid, **binds)
         self.count("runner", t0)
         if held_out:  # the held-out inputs go as soon as they are used, and nothing of them is quoted
             shutil.rmtree(tape / "inputs", ignore_errors=True)
             (tape / "requests.jsonl").unlink(missing_ok=True)
             out = ""
-        stopped = runner_stopped(code, out, timed_out, self.timeout, self.sandbox.cpu_seconds)  # (shown first)
+        stopped = runner_stopped(code, out, timed_out, seconds, self.sandbox.cpu_seconds)  # (shown first)
+        if timed_out and seconds < self.timeout:  # (not this exercise's time limit: the job's)
+            stopped = [(test, f"ERROR: not finished at the time limit of the whole job ({CUT_SHORT})")
+                       for test, _ in stopped]
         cut = re.search(r"\[grader: cut here: \d+ bytes of output left out \(the run printed (\d+) MB\)\]", out)
         if cut:  # (a flood is graded as it ended; the student is told that its output was cut)
             self.printed[tag.rsplit("_", 1)[0]] = int(cut.group(1))
         copy_tape(tape, judged / "tape")
         report = judged / "report.json"
-        t0 = time.time()
+        t0, seconds = time.time(), self.limit(self.timeout)
         jcode, jout, jtimed = run_killable([str(judge), f"--gtest_filter={gfilter}", "--judge", str(judged / "tape"),
-                                            f"--gtest_output=json:{report}"], self.timeout, env=jenv, cwd=judged)
+                                            f"--gtest_output=json:{report}"], seconds, env=jenv, cwd=judged)
         self.count("judge", t0)
+        if jtimed and seconds < self.timeout:
+            return False, stopped + [("", f"ERROR: the judge had not finished at the time limit of the whole job "
+                                      f"({CUT_SHORT})")], out
         if jtimed:
-            return False, stopped + [("", f"ERROR: timed out after {self.timeout} s while the judge drew this "
+            return False, stopped + [("", f"ERROR: timed out after {seconds} s while the judge drew this "
                                       "exercise with your shaders (an endless loop in a shader?)")], out
         if not report.exists():
             return False, stopped + [("", "ERROR: the judge could not finish (a fault of the grader, not of the "
@@ -219,7 +241,7 @@ class Grader:
         (judged / "empty").mkdir()
         t0 = time.time()
         code, _, timed_out = run_killable([str(judge), f"--gtest_filter={gfilter}", "--judge", str(judged / "empty")],
-                                            self.timeout, env=dict(env, WB_PLAN=str(plan)), cwd=judged)
+                                            self.limit(self.timeout), env=dict(env, WB_PLAN=str(plan)), cwd=judged)
         self.count("judge", t0)
         if timed_out or code < 0:  # a partial plan would read as results the student's build never recorded
             raise RuntimeError(f"planning the held-out tests {gfilter} {'timed out' if timed_out else 'crashed'} (a "
@@ -311,6 +333,9 @@ class Grader:
             results.problems.append(f"{n} build{'s' if n > 1 else ''} of this submission ran past the build time "
                                     f"limit of {self.build_timeout} s and {'were' if n > 1 else 'was'} stopped: the "
                                     "exercises that could not be built scored 0")
+        if self.deadline_reached:
+            results.problems.append("grading reached the time limit of the whole job before it ended: the runs "
+                                    "after that were cut short, and the exercises they decided scored 0")
         sweep_leftovers(self.ws.uids())
         try:
             return results.finish(time.time() - t0)

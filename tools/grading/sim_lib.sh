@@ -3,7 +3,7 @@
 # per submission with a memory limit and a CPU quota (v1 or v2), seen from inside as the container's
 # own, with no user namespaces. Needs: root, and $root, $bytes and $quota set by the caller.
 # shellcheck shell=bash disable=SC2034,SC2154
-# (SC2034, SC2154: root, bytes and quota come from the caller; wall, peak and ooms go to it)
+# (SC2034, SC2154: root, bytes and quota come from the caller; rc, wall, peak and ooms go to it)
 
 # shellcheck source=../workbook/packages.sh
 source "$(dirname "${BASH_SOURCE[0]}")/../workbook/packages.sh"
@@ -72,8 +72,8 @@ sim_peak() {  # NAME: the group's peak memory in MiB (page cache included), and 
   echo "$(($(cat "$f" 2>/dev/null || echo 0) >> 20)) ${kills:-?}"
 }
 
-sim_contained() {  # NAME LOG COMMAND...: runs COMMAND in the root, in cgroup NAME; sets wall (s), peak
-  # (MiB) and ooms (the processes killed for memory)
+sim_contained() {  # NAME LOG COMMAND...: runs COMMAND in the root, in cgroup NAME; sets rc (its exit
+  # code), wall (s), peak (MiB) and ooms (the processes killed for memory)
   local name=$1 log=$2 d view t0
   shift 2
   local dirs views=()
@@ -86,7 +86,7 @@ sim_contained() {  # NAME LOG COMMAND...: runs COMMAND in the root, in cgroup NA
   (
     for d in "${dirs[@]}"; do echo "$BASHPID" >"$d/cgroup.procs"; done
     exec setpriv --bounding-set=-sys_admin -- "${mode_env[@]}" chroot "$root" "$@"
-  ) >"$log" 2>&1 || true
+  ) >"$log" 2>&1 && rc=0 || rc=$?
   wall=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
   for view in "${views[@]}"; do umount -l "$view" 2>/dev/null || true; done
   read -r peak ooms <<<"$(sim_peak "$name")"

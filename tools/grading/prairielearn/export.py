@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """Writes the workbook for PrairieLearn's external grader (docs/prairielearn.md):
-./workbook prairielearn-export DIR [--labs 01,03] [--image NAME] [--timeout S]
+./workbook prairielearn-export DIR [--labs 01,03] [--image NAME] [--timeout S] [--held-out total|exercises]
 
-  DIR/course/questions/shadow-workbook/labNN_name/   one question per lab (PrairieLearn gives a job at
+  DIR/course/questions/shadow-workbook/NN_name/      one question per lab (PrairieLearn gives a job at
                                                      most 600 s; a lab is graded in well under that)
           info.json, question.html                   the student uploads the lab's exercise files
   DIR/course/serverFilesCourse/shadow-workbook/      what each job brings: run_job (the entrypoint) and
@@ -30,6 +30,7 @@ HERE = Path(__file__).resolve().parent
 # the grader itself, which the image runs and which holds no answer.
 KEEP_IN_IMAGE = {"tools/grading"}
 MAX_TIMEOUT = 600  # PrairieLearn's limit for one grading job
+PLACEHOLDER = "YOUR_DOCKERHUB_NAME/shadow-workbook-grader:latest"
 
 
 def instructor_paths():
@@ -57,7 +58,7 @@ def labs_of(wanted):
     return [(nn, json.loads(manifests[nn].read_text())) for nn in (wanted or list(manifests))]
 
 
-def question(nn, lab, image, timeout):
+def question(nn, lab, image, timeout, held_out):
     """info.json and question.html of one lab's question."""
     files = sorted({Path(e["file"]).name for e in lab["exercises"]})
     if len(files) != len({e["file"] for e in lab["exercises"]}):
@@ -67,7 +68,8 @@ def question(nn, lab, image, timeout):
             "title": f"Lab {nn}: {lab['title']}", "topic": "Real-time shadows", "tags": ["shadow-workbook", f"lab{nn}"],
             "type": "v3", "singleVariant": True, "gradingMethod": "External",
             "externalGradingOptions": {"enabled": True, "image": image, "serverFilesCourse": ["shadow-workbook/"],
-                                       "entrypoint": ["/bin/bash", "/grade/serverFilesCourse/shadow-workbook/run_job", nn],
+                                       "entrypoint": ["/bin/bash", "/grade/serverFilesCourse/shadow-workbook/run_job", nn,
+                                                      str(timeout), held_out],
                                        "timeout": timeout}}
     rows = "\n".join(f"    <li>{e['id']} {e['title']} ({e['points']} points{', bonus' if e.get('extension') else ''})</li>"
                      for e in lab["exercises"])
@@ -92,9 +94,12 @@ def main():
     ap = argparse.ArgumentParser(prog="workbook prairielearn-export", description=__doc__.split("\n")[0])
     ap.add_argument("dir", help="an empty or new folder")
     ap.add_argument("--labs", default="", help="only these labs, e.g. 01,03 (default: all)")
-    ap.add_argument("--image", default="YOUR_DOCKERHUB_NAME/shadow-workbook-grader:latest",
+    ap.add_argument("--image", default=PLACEHOLDER,
                     help="the image name the questions use (where you push the image)")
     ap.add_argument("--timeout", type=int, default=MAX_TIMEOUT, help=f"seconds a job may take (at most {MAX_TIMEOUT})")
+    ap.add_argument("--held-out", choices=("total", "exercises"), default="total",
+                    help="what students see of the held-out tests at every attempt: their points (default), or "
+                         "also which exercises passed them (lets a student tune code against unseen scenes)")
     args = ap.parse_args()
     if not 30 <= args.timeout <= MAX_TIMEOUT:
         ap.error(f"--timeout {args.timeout}: PrairieLearn allows at most {MAX_TIMEOUT} s (and a lab needs 30 s at least)")
@@ -113,7 +118,7 @@ def main():
     copy_files(files, server / "workbook")
     shutil.copy2(HERE / "run_job", server / "run_job")
     for nn, lab in labs:
-        info, html = question(nn, lab, args.image, args.timeout)
+        info, html = question(nn, lab, args.image, args.timeout, args.held_out)
         q = out / "course/questions/shadow-workbook" / lab["lab"]
         q.mkdir(parents=True)
         (q / "info.json").write_text(json.dumps(info, indent=2) + "\n")
@@ -129,7 +134,11 @@ def main():
     print(f"prairielearn-export: wrote {out}: {len(labs)} question{'s' * (len(labs) > 1)} (labs {lab_list}), "
           f"{len(files)} files for the jobs, {len(public)} in the image (no solutions, mutants or held-out tests)")
     print(f"prairielearn-export: copy {out}/course into your course's repository; build and push the image: "
-          f"docker build -t {args.image} {out}/image && docker push {args.image}")
+          f"docker build -t {args.image} {out}/image && docker push {args.image}; then sync it in PrairieLearn "
+          "(docs/prairielearn.md lists every step)")
+    if args.image == PLACEHOLDER:
+        print(f"prairielearn-export: note: the questions name the image {PLACEHOLDER}: give yours with --image NAME "
+              "(or edit each info.json), or PrairieLearn will find no image to grade with", file=sys.stderr)
 
 
 if __name__ == "__main__":

@@ -3,13 +3,16 @@
 format; run_job turns it into PrairieLearn's external-grader result, on every exit path:
 
   results.py --provisional RESULTS       before grading: a file that says grading did not finish
-  results.py --final GRADER RESULTS      after grading (finish_results.py has completed GRADER's file)
+  results.py --final GRADER RESULTS [total|exercises]
+                                         after grading (finish_results.py has completed GRADER's file);
+                                         the held-out tests' detail: their points alone, or which
+                                         exercises passed them too
   results.py --overlay SRC DEST          the course's copy of the workbook over the image's: writes only
                                          the files whose content differs (make rebuilds only those)
   results.py --arrange STUDENT NN DEST   (in the workbook) the flat upload as a submission of lab NN
 
-PrairieLearn's result: `score` in [0, 1]; `gradable` false only where nothing could be graded through
-no fault of the student's code (the student then keeps the attempt); `tests` with points, max_points,
+PrairieLearn's result: `score` in [0, 1]; `gradable` false only where no exercise was graded (the
+grader or the job failed: the student keeps the attempt); `tests` with points, max_points,
 output (plain text) and images (data URIs); the whole file under 1 MB. PrairieLearn shows every test
 and the score at once, so the held-out tests, which Gradescope hides until the due date, are one test
 here: their points and which exercises passed them, never their cases.
@@ -24,6 +27,7 @@ from pathlib import Path
 MAX_BYTES = 1_000_000  # PrairieLearn's limit on results.json
 _PICTURE = re.compile(r"\n*!\[([^\]]*)\]\((data:image/[a-z]+;base64,[A-Za-z0-9+/=]+)\)")
 STATUSES = ("done", "wrong", "not implemented", "error")  # (report.status_of)
+GRADER_FAULT = "a fault of the grader"
 ASK = "Submit again; if it happens again, tell your instructor."
 
 
@@ -53,33 +57,42 @@ def test_of(t):
             "message": status, "output": text.strip(), "images": images}
 
 
-def held_out(tests):
-    """The held-out tests as one: their points, and which exercises passed them."""
+def held_out(tests, detail):
+    """The held-out tests as one: their points, and (detail "exercises") which exercises passed them.
+    The default ("total") names none: PrairieLearn shows it at every attempt, and a list would let a
+    student tune code against scenes they were never given."""
     lines = [f"{t['number']}: {'passed' if t.get('status') == 'passed' else 'failed'}" for t in tests]
     return {"name": "Held-out tests", "points": sum(t.get("score", 0) for t in tests),
             "max_points": sum(t.get("max_score", 0) for t in tests),
             "message": "scenes you were not given; their cases are not shown",
-            "output": "\n".join(lines), "images": []}
+            "output": "\n".join(lines) if detail == "exercises" else "", "images": []}
 
 
-def convert(doc):
+def convert(doc, detail="total"):
     """PrairieLearn's result from the grader's finished (or completed) Gradescope results.json."""
     tests = [t for t in doc.get("tests", []) if "grading-environment" not in t.get("tags", [])]
     shown = [test_of(t) for t in tests if t.get("visibility", "visible") == "visible"]
     later = [t for t in tests if t.get("visibility", "visible") != "visible"]
     if later:
-        shown.append(held_out(later))
+        shown.append(held_out(later, detail))
     maximum = doc.get("extra_data", {}).get("max_score") or sum(t["max_points"] for t in shown)
     earned = sum(t["points"] for t in shown)
     bonus = sum(t["points"] for t in shown if t["max_points"] == 0)
     finished = "execution_time" in doc
+    # Graded: an exercise that has a result of the submission's own, not a fault of the grader's
+    # (grader.py and batch.salvage say "a fault of the grader" in those).
+    graded = [t for t in tests if t.get("number") and GRADER_FAULT not in t.get("output", "")]
+    points = f"{earned - bonus:g} of {maximum:g} points" + (f" and {bonus:g} bonus points from extensions" if bonus else "")
     if finished:
-        message = f"{earned - bonus:g} of {maximum:g} points" + (f" and {bonus:g} bonus points from extensions" if bonus else "")
-        message += "." + "".join(f" {plain(n)}" for n in re.findall(r"\*\*Note:\*\*[^\n]*", doc.get("output", "")))
+        message = points + "." + "".join(f" {plain(n)}" for n in re.findall(r"\*\*Note:\*\*[^\n]*", doc.get("output", "")))
     else:
-        message = plain(doc.get("output", "")) or f"Grading did not finish. {ASK}"
-    graded = any(t.get("number") for t in tests)
-    result = {"gradable": finished or graded, "score": min(1.0, earned / maximum) if maximum else 0.0,
+        why = re.search(r"Grading did not finish: (.*?)(?:\. The \d+ exercises|, before any exercise|\.\s|$)",
+                        doc.get("output", ""))
+        why = why.group(1) if why else "the grader stopped"
+        message = (f"Grading stopped before the end ({why}): {points} from the {len(graded)} exercise"
+                   f"{'s' * (len(graded) != 1)} graded before that; the others score 0. {ASK}" if graded else
+                   f"Grading did not finish ({why}), before any exercise was graded: this attempt does not count. {ASK}")
+    result = {"gradable": bool(graded), "score": min(1.0, earned / maximum) if maximum else 0.0,
               "message": message, "output": "", "tests": shown}
     if not result["gradable"]:  # (nothing graded, through no fault of the code: the attempt is kept)
         result["format_errors"] = [message]
@@ -101,12 +114,12 @@ def provisional(results_dir):
                         "format_errors": [f"Grading did not finish. {ASK}"], "output": "", "tests": []})
 
 
-def final(grader_dir, results_dir):
+def final(grader_dir, results_dir, detail):
     try:
         doc = json.loads((grader_dir / "results.json").read_text())
     except (OSError, ValueError):
-        doc = {"output": f"Grading did not finish: the grader wrote no results. {ASK}", "tests": []}
-    write(results_dir, convert(doc))
+        doc = {"output": "Grading did not finish: the grader wrote no results.", "tests": []}
+    write(results_dir, convert(doc, detail))
 
 
 def arrange(student, lab, dest):
@@ -146,8 +159,8 @@ def main():
     args = sys.argv[1:]
     if len(args) == 2 and args[0] == "--provisional":
         provisional(Path(args[1]))
-    elif len(args) == 3 and args[0] == "--final":
-        final(Path(args[1]), Path(args[2]))
+    elif len(args) in (3, 4) and args[0] == "--final":
+        final(Path(args[1]), Path(args[2]), args[3] if len(args) == 4 else "total")
     elif len(args) == 3 and args[0] == "--overlay":
         print(*overlay(Path(args[1]), Path(args[2])))
     elif len(args) == 4 and args[0] == "--arrange":

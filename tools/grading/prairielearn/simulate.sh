@@ -67,6 +67,7 @@ for sub in "$subs"/*; do
     die "could not mount the image's overlay on $tree"
   rm -rf "$root/grade" && mkdir -p "$root/grade/student" "$root/grade/data" "$root/grade/serverFilesCourse"
   cp -a "$export_dir/course/serverFilesCourse/shadow-workbook" "$root/grade/serverFilesCourse/"
+  mkdir -p "$root/grade/shared" && cp -a "$export_dir/course/serverFilesCourse/shadow-workbook" "$root/grade/shared/"  # (PrairieLearn's older copy)
   echo '{"params": {}, "correct_answers": {}, "submitted_answers": {}}' >"$root/grade/data/data.json"
   # pl-file-upload's files, flat: the lab's exercise files from the submission's labs/NN_name/ (or its top)
   python3 - "$sub" "$here/labs/$lab_name/exercises.json" "$root/grade/student" "$lab_name" <<'PY'
@@ -80,12 +81,14 @@ for rel in sorted({e["file"] for e in manifest["exercises"]}):
             break
 PY
   sim_contained "wbpl-$$-${name//[^A-Za-z0-9_]/_}" "$root/../job-$name.log" "${entrypoint[@]}"
-  row=$(python3 - "$root/grade/results/results.json" <<'PY'
+  # shellcheck disable=SC2154  # (rc: set by sim_contained)
+  row=$(python3 - "$root/grade/results/results.json" "$rc" <<'PY'
 import json, os, sys
 try:
     size = os.path.getsize(sys.argv[1])
     r = json.load(open(sys.argv[1]))
-    bad = [k for k in ("score",) if not isinstance(r.get(k), (int, float)) or not 0 <= r[k] <= 1]
+    bad = [f"the entrypoint exited {sys.argv[2]} (PrairieLearn reads no results then)"] * (sys.argv[2] != "0")
+    bad += [k for k in ("score",) if not isinstance(r.get(k), (int, float)) or not 0 <= r[k] <= 1]
     bad += ["over 1 MB"] * (size > 1_000_000)
     bad += [f"test {t.get('name')} lacks {k}" for t in r.get("tests", []) for k in ("name", "points", "max_points")
             if k not in t]
