@@ -13,23 +13,30 @@ sim_parse_limits() {  # MEMORY CPUS: sets bytes and quota
   quota=$(awk -v c="$2" 'BEGIN { q = int(c * 100000); if (q < 1000) exit 1; print q }') || die "--cpus $2: such as 0.5"
 }
 
-sim_make_root() {  # once: a Debian 12 minbase root in $root, with this machine's apt sources and DNS
+sim_make_root() {  # [SUITE]: once, a Debian minbase root in $root (bookworm: 12; trixie: 13), with this
+  # machine's apt mirror and DNS, and /proc and /dev bound into it until the script ends
+  local suite=${1:-bookworm}
   if [ ! -x "$root/usr/bin/apt-get" ]; then
     command -v debootstrap >/dev/null || apt-get install -y debootstrap >/dev/null
     local mirror
     mirror=$(apt_mirror || true)  # (tools/workbook/packages.sh)
-    echo "simulate: making a Debian 12 root in $root (${mirror:-deb.debian.org})"
-    debootstrap --variant=minbase bookworm "$root" "${mirror:-http://deb.debian.org/debian}" >"$root.debootstrap.log" 2>&1 ||
+    echo "simulate: making a Debian $suite root in $root (${mirror:-deb.debian.org})"
+    mkdir -p "$(dirname "$root")"
+    debootstrap --variant=minbase "$suite" "$root" "${mirror:-http://deb.debian.org/debian}" >"$root.debootstrap.log" 2>&1 ||
       die "debootstrap failed: $root.debootstrap.log"
   fi
   cp /etc/resolv.conf "$root/etc/resolv.conf"
-  [ ! -f /etc/apt/sources.list.d/debian.sources ] || cp /etc/apt/sources.list.d/debian.sources "$root/etc/apt/sources.list.d/"
+  [ "$suite" != bookworm ] || [ ! -f /etc/apt/sources.list.d/debian.sources ] ||
+    cp /etc/apt/sources.list.d/debian.sources "$root/etc/apt/sources.list.d/"
   mounted=()
   userns=$(cat /proc/sys/user/max_user_namespaces)
   trap sim_cleanup EXIT
   sim_bind /proc "$root/proc"
   sim_bind /dev "$root/dev"
   mkdir -p "$root/dev/shm" "$root/tmp" && chmod 1777 "$root/tmp"
+}
+
+sim_no_userns() {  # as in a container: no user namespaces while the script runs (or the weakest mode)
   v2=0 && [ -f /sys/fs/cgroup/cgroup.controllers ] && v2=1
   # No user namespaces, as in Docker (its seccomp profile refuses them). Where this machine will not
   # let the sysctl be changed, the grader is told to use the weakest mode, which is what it falls back

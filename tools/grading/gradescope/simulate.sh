@@ -33,6 +33,7 @@ sim_parse_limits "$memory" "$cpus"
 
 # 1. The root, once.
 sim_make_root
+sim_no_userns
 
 # 2. /autograder as Gradescope lays it out: the zip in source/, run_autograder beside it.
 ag=$root/autograder

@@ -33,6 +33,7 @@ lab_name=$(basename "$(ls -d "$here/labs/${lab}_"*)") || die "no lab $lab"
 source "$here/tools/grading/sim_lib.sh"
 sim_parse_limits "$memory" "$cpus"
 sim_make_root
+sim_no_userns
 
 # 1. The export, and the image built from it as its Dockerfile says (root, network, no limits).
 # The image's tree is kept in $image and mounted for each job with an overlay of its own, so every job
