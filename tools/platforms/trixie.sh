@@ -3,7 +3,7 @@
 #   tools/platforms/trixie.sh [ROOT]     (as root; ROOT: default build/trixie/root, made once)
 # Trixie's packages are near what Ubuntu 24.04 and Homebrew give students (GCC 14, CMake 3.31,
 # GLFW 3.4, Embree 4, GoogleTest 1.16, ImGui 1.90): the root is made with debootstrap from the mirror
-# apt uses, the committed tree is copied in (git archive HEAD), `./workbook setup` installs the
+# apt uses, the committed tree is cloned in (with git, as CI's clone), `./workbook setup` installs the
 # packages there and `./workbook test` runs the suite, the ray-traced truth on Embree 4 included. It
 # prints the versions it built with, each step's time and the suite's result; the logs stay in
 # ROOT/../ (setup.log, test.log). A command of its own: CI does not run it (about an hour on 2 cores).
@@ -19,12 +19,13 @@ t0=$(date +%s)
 sim_make_root trixie
 echo "trixie: the root is ready ($(($(date +%s) - t0)) s)"
 
-rm -rf "$root/work/workbook" && mkdir -p "$root/work/workbook"
-git -C "$here" archive --format=tar HEAD | tar -xf - -C "$root/work/workbook"
+rm -rf "$root/work/workbook" && mkdir -p "$root/work"
+git clone -q --no-hardlinks "$here" "$root/work/workbook"  # (a clone, as CI's: the export tests need git)
 [ ! -d "$here/../shared" ] || { rm -rf "$root/work/shared" && cp -r "$here/../shared" "$root/work/shared"; }
 
 t0=$(date +%s)
-chroot "$root" /bin/bash -c 'cd /work/workbook && apt-get update -qq && bash ./workbook setup' >"$logs/setup.log" 2>&1 ||
+chroot "$root" /bin/bash -c 'cd /work/workbook && apt-get update -qq && apt-get install -y -qq git >/dev/null &&
+  bash ./workbook setup' >"$logs/setup.log" 2>&1 ||
   { tail -20 "$logs/setup.log"; die "./workbook setup failed in trixie ($logs/setup.log)"; }
 echo "trixie: ./workbook setup took $(($(date +%s) - t0)) s"
 chroot "$root" dpkg-query -W -f='  ${Package} ${Version}\n' g++ cmake libglfw3-dev libembree-dev libgtest-dev \
