@@ -352,7 +352,9 @@ def sweep_leftovers(uids):
     """Removes what sandbox users left behind outside a bwrap sandbox (whose /tmp and IPC namespace
     die with it): files in the world-writable folders (a Mesa .drirc, a note for a later student),
     System V shared memory, semaphores and message queues, and any process still running as one.
-    Only those of `uids` (one grading tree's users): another tree may be grading at the same time."""
+    Only those of `uids` (one grading tree's users): another tree may be grading at the same time.
+    The processes go first: one still running could make again what was removed before it."""
+    kill_sandbox_processes(uids)
     for top in SHARED_TMP:
         for folder, dirs, files in os.walk(top):
             for name in files + dirs:
@@ -366,7 +368,6 @@ def sweep_leftovers(uids):
     for kind, flag in (("shm", "-m"), ("sem", "-s"), ("msg", "-q")):
         for ipc_id in sandbox_ipc(kind, uids):
             subprocess.run(["ipcrm", flag, ipc_id], capture_output=True)
-    kill_sandbox_processes(uids)
 
 
 def kill_sandbox_processes(uids, spare=frozenset()):
