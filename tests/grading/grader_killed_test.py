@@ -128,48 +128,27 @@ check(not changed, f"the checkout's modes were not put back after the kills: {ch
 print(f"uninterrupted after the kills: score {doc.get('score')}")
 
 
-def cgroup(limit):
-    """A memory cgroup (v2, or v1's memory controller) with a memory limit and no swap, or None where
-    this machine lets none be made."""
-    v2 = Path("/sys/fs/cgroup/cgroup.controllers").exists()
-    group = Path(f"/sys/fs/cgroup{'' if v2 else '/memory'}/wb-starved-{os.getpid()}")
-    try:
-        if v2 and "memory" not in Path("/sys/fs/cgroup/cgroup.subtree_control").read_text():
-            Path("/sys/fs/cgroup/cgroup.subtree_control").write_text("+memory")
-        group.mkdir()
-        (group / ("memory.max" if v2 else "memory.limit_in_bytes")).write_text(str(limit))
-        swap = group / ("memory.swap.max" if v2 else "memory.memsw.limit_in_bytes")
-        if swap.exists():
-            swap.write_text("0" if v2 else str(limit))
-        return group
-    except OSError:
-        return None
-
-
 # Starved: 300 MB for the whole grading, and 01.1 of a full submission touching 600 MB.
 sys.path.insert(0, str(ROOT / "tools/grading"))
+sys.path.insert(0, str(ROOT / "tools"))
 import submission_tree  # noqa: E402
+from grading.cgroups import Cgroups  # noqa: E402
 
-group = cgroup(300 << 20)
-if group is None:
+groups = Cgroups(pids=4096, memory=300 << 20)  # (the grader's own groups: v1 or v2, made and removed)
+groups.limits.update({"memory.swap.max": "0", "memory.memsw.limit_in_bytes": str(300 << 20)})  # (no swap)
+if "memory" not in groups.available():
     print("starved: skipped (no memory cgroup can be made here; the stand-in,"
           " tools/grading/gradescope/simulate.sh --memory 300M, is the way to try it)")
 else:
-    sub = out / "subs/full"
     submission_tree.prepend(out / "subs/full", "01_depth_map", "exercise.cpp", "#include <cstring>\n")
     submission_tree.edit(out / "subs/full", "01_depth_map", "exercise.cpp", "01.1",
                          "  { static char* bomb = new char[600u << 20]; std::memset(bomb, 1, 600u << 20); }\n")
     folder = out / "starved"
+    name = f"starved-{os.getpid()}"
     try:
-        r = subprocess.run(GRADE + ["--out", str(folder)], capture_output=True, text=True,
-                           preexec_fn=lambda: (group / "cgroup.procs").write_text(str(os.getpid())))
+        r = subprocess.run(groups.prefix(name) + GRADE + ["--out", str(folder)], capture_output=True, text=True)
     finally:
-        for _ in range(50):  # (its processes gone, the group can go)
-            try:
-                group.rmdir()
-                break
-            except OSError:
-                time.sleep(0.1)
+        groups.remove(name)
     doc = results_of(folder, r.returncode)
     lost = sorted(t["number"] for t in doc.get("tests", []) if t.get("number") and t["score"] < t["max_score"])
     out01 = next((t["output"] for t in doc.get("tests", []) if t.get("number") == "01.1"), "")
