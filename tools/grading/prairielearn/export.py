@@ -25,17 +25,14 @@ import uuid
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[3]
+sys.path.insert(0, str(ROOT / "tools"))
+from grading.workspace import instructor_paths  # noqa: E402
 HERE = Path(__file__).resolve().parent
 # What the public image leaves out: the instructor paths (tools/grading/instructor_paths.txt), but for
 # the grader itself, which the image runs and which holds no answer.
 KEEP_IN_IMAGE = {"tools/grading"}
 MAX_TIMEOUT = 600  # PrairieLearn's limit for one grading job
 PLACEHOLDER = "YOUR_DOCKERHUB_NAME/shadow-workbook-grader:latest"
-
-
-def instructor_paths():
-    lines = (ROOT / "tools/grading/instructor_paths.txt").read_text().splitlines()
-    return [l.strip() for l in lines if l.strip() and not l.startswith("#")]
 
 
 def tracked_files():
