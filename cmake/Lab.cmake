@@ -167,6 +167,10 @@ function(_wb_add_mutant lab nn mutant_file)
     set(environment "")
   endif()
   string(REPLACE "." "_" tag ${exercise})
+  if(kind STREQUAL ".case")
+    _wb_check_case(${nn} ${name} ${runner} ${mutant_file} ${mutant_dir})
+    return()
+  endif()
   set(test mutant.lab${nn}.${name})
   if(kind STREQUAL ".perturbation")
     set(test perturbation.lab${nn}.${name})
@@ -229,9 +233,46 @@ function(add_lab lab)
     _wb_lab_variant(${lab} ${nn} solution "_solution" ${PROJECT_SOURCE_DIR}/solutions/${lab})
     _wb_register_tests(${lab} ${nn} solution lab${nn}_solution_tests "${ids}")
     file(GLOB mutants CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tests/mutants/${lab}/*.mutant
-                                        ${PROJECT_SOURCE_DIR}/tests/mutants/${lab}/*.perturbation)
+                                        ${PROJECT_SOURCE_DIR}/tests/mutants/${lab}/*.perturbation
+                                        ${PROJECT_SOURCE_DIR}/tests/check_cases/${lab}/*.case)
     foreach(m IN LISTS mutants)
       _wb_add_mutant(${lab} ${nn} ${m})
     endforeach()
+  endif()
+  _wb_check_target(${lab} ${nn})
+endfunction()
+
+# A check case (tests/check_cases/NN_name/NAME.case: a mutant's find/replace, a crash or an endless
+# loop among them): wb_check on it, as a student's check runs, must print each `expect:` line's
+# pattern (a row of its verdict table). tools/platforms/windows/cross_build.sh gives the same cases
+# to wb_check.exe under Wine and compares the verdicts. Label checkcase (in `./workbook test --heavy`).
+function(_wb_check_case nn name tests case_file case_dir)
+  file(STRINGS ${case_file} expects REGEX "^expect: ")
+  list(TRANSFORM expects REPLACE "^expect: " "")
+  add_test(NAME checkcase.lab${nn}.${name}
+           COMMAND wb_check ${nn} --root ${PROJECT_SOURCE_DIR} --tests $<TARGET_FILE:${tests}>
+                   --judge $<TARGET_FILE:lab${nn}_solution_tests> --submission ${case_dir}
+                   --tape ${CMAKE_BINARY_DIR}/check-cases/lab${nn}_${name})
+  set_tests_properties(checkcase.lab${nn}.${name} PROPERTIES LABELS "lab${nn};checkcase;heavy" TIMEOUT 300
+                       PASS_REGULAR_EXPRESSION "${expects}")
+endfunction()
+
+# check_NN: `check` where there is no ./workbook (a Windows laptop): `cmake --build build --target
+# check_NN` builds what it needs, then runs wb_check, as ./workbook check NN does.
+function(_wb_check_target lab nn)
+  if(NOT TARGET wb_check)
+    return()
+  endif()
+  set(judge "")
+  if(TARGET lab${nn}_solution_tests)
+    set(judge --judge $<TARGET_FILE:lab${nn}_solution_tests>)
+  endif()
+  add_custom_target(check_${nn}
+    COMMAND wb_check ${nn} --root ${PROJECT_SOURCE_DIR} --tests $<TARGET_FILE:lab${nn}_tests> ${judge}
+            --tape ${CMAKE_BINARY_DIR}/check/lab${nn}
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} USES_TERMINAL VERBATIM)
+  add_dependencies(check_${nn} wb_check lab${nn}_tests)
+  if(judge)
+    add_dependencies(check_${nn} lab${nn}_solution_tests)
   endif()
 endfunction()

@@ -82,7 +82,7 @@ std::vector<glm::vec4> runGlslKernel(const std::string& functions, const std::fi
 
 /// The time of the last runGlslKernel() dispatch, in milliseconds (to glFinish, on the clock):
 /// the judge holds a student's kernel against the reference's to catch endless loops, which
-/// llvmpipe cuts off after 65535 iterations instead of hanging.
+/// the loop guard (loop_guard.hpp) cuts off after 50000 steps instead of hanging.
 double lastKernelMilliseconds();
 
 /// runGlslKernel() with each texture's sampler type (or Auto) and sampler object given.

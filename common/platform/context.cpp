@@ -199,6 +199,12 @@ class GlfwContext final : public Context {
     glfwGetFramebufferSize(window_, &s.x, &s.y);
     return s;
   }
+  glm::ivec2 windowSize() const override {
+    if (hidden_) return {0, 0};
+    glm::ivec2 s;
+    glfwGetWindowSize(window_, &s.x, &s.y);
+    return s;
+  }
 
  private:
   GLFWwindow* window_ = nullptr;

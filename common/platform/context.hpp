@@ -39,6 +39,10 @@ class Context {
   virtual void endFrame() {}
   /// The default framebuffer's size in pixels ({0,0} when headless).
   virtual glm::ivec2 framebufferSize() const { return {0, 0}; }
+  /// The window's size in the window system's units (points on a Mac: half the framebuffer's pixels
+  /// on a Retina display); {0, 0} headless. Only for the ratio of the two: everything drawn or read
+  /// back uses framebufferSize().
+  virtual glm::ivec2 windowSize() const { return {0, 0}; }
   /// Switches the window between the primary monitor (at its resolution) and a window of `size`.
   virtual void setFullscreen(bool, glm::ivec2) {}
   /// The monitor's content scale (2 on a Retina display, 1.5 at 150% on Windows); 1 when headless.

@@ -20,6 +20,7 @@ class ImGuiLayer {
   ImGuiLayer& operator=(const ImGuiLayer&) = delete;
   /// Text 16 px times `scale` tall, and the paddings and widgets scaled with it.
   void setScale(float scale);
+  float scale() const { return scale_; }
 
  private:
   float bakedPixels_ = 13.0f;  // ImGui's own font when no TTF is found

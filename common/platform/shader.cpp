@@ -2,6 +2,7 @@
 
 #include "common/base/error.hpp"
 #include "common/base/variant.hpp"
+#include "common/platform/loop_guard.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -61,20 +62,26 @@ fs::path includeTarget(const std::string& name, const fs::path& origin, int line
 void expand(const std::string& rawText, const fs::path& origin, const std::string& defines, const Reading& r,
             ShaderSource& src, std::ostringstream& out, int depth) {
   if (depth > 16) throw Error(origin.string() + ": #include nested too deeply (a cycle?)");
-  const std::string text = withoutBomAndCr(rawText);
+  // An exercise's file (the student's GLSL) has every loop bounded, line for line (loop_guard.hpp).
+  const bool exercise = origin.filename().string().rfind("exercise", 0) == 0;
+  const std::string text = exercise ? guardLoops(withoutBomAndCr(rawText)) : withoutBomAndCr(rawText);
   const int index = static_cast<int>(src.files.size());
   src.files.push_back(origin);
+  // (its definitions come first, or after a #version line, which must precede them)
+  const bool versioned = text.rfind("#version", 0) == 0 || text.find("\n#version") != std::string::npos;
+  if (exercise && !versioned) out << loopGuardPrelude() << "#line 1 " << index << "\n";
   static const std::regex includeRe(R"(^\s*#\s*include\s+\"([^\"]+)\")");
   static const std::regex thisFileRe("^#line (\\d+) " + std::to_string(kThisFileSource) + "$");
   std::istringstream in(text);
   // An included file's lines are its own from its first (the top file's #version must come first).
-  if (depth > 0) out << "#line 1 " << index << "\n";
+  if (depth > 0 && !exercise) out << "#line 1 " << index << "\n";
   int line = 0;
   for (std::string s; std::getline(in, s);) {
     ++line;
     std::smatch m;
     if (s.rfind("#version", 0) == 0) {
-      out << s << "\n" << defines << "#line " << line + 1 << " " << index << "\n";
+      out << s << "\n"
+          << defines << (exercise ? loopGuardPrelude() : "") << "#line " << line + 1 << " " << index << "\n";
     } else if (std::regex_search(s, m, includeRe)) {
       const fs::path target = includeTarget(m[1].str(), origin, line, r);
       expand(textOf(target, r.substitutes), target, "", r, src, out, depth + 1);

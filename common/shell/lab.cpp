@@ -40,6 +40,7 @@ Lab::Lab(std::string defaultScene, ShadowKind kind)
                "panels and captions stay sharp): 0.5 at 1920x1080 costs about what 960x540 does");
   settings.add("ui.scale", uiScale_, 0.0f, 4.0f,
                "the panels' text size: 1 = 16 px, 2 = 32 px; 0 = follow the monitor (and 1.25x while presenting)");
+  settings.add("ui.panels", uiPanels_, "in a window, the panels (H toggles them; off: the scene alone, for a lecture)");
   // For lectures (demo.json turns them on); the visibility buffer that tests read never changes.
   settings.add("present.srgb", present_.srgb, "write sRGB-encoded colour (the shading is linear)");
   settings.add("present.grid", present_.grid, "a faint one-unit grid on the ground, to read texel sizes off");

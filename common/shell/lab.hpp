@@ -200,6 +200,7 @@ class Lab {
   int bookmark_ = 1;          // counted from 1, as the keys are
   CompareChoice comparison_;  // the app's split screen, set every frame
   float uiScale_ = 0;         // ui.scale: the panels' text size over 16 px (0: follow the monitor)
+  bool uiPanels_ = true;      // ui.panels: the panels shown (H toggles it)
   float renderScale_ = 1;     // render.scale: the scene's resolution over the window's (in a window)
   // Motion for clips (--animate): the lights turned about the vertical axis, the camera moved back.
   float lightOrbit_ = 0, cameraDolly_ = 0, appliedOrbit_ = 0, appliedDolly_ = 0;

@@ -22,9 +22,17 @@ namespace wb {
 
 // ui.scale, or where it is 0, the monitor's content scale, more for a window taller than 1080 rows,
 // and a quarter more while presenting (read from the back of a room).
+float LabHost::pixelsPerPoint() const {
+  const glm::ivec2 pixels = ctx_->framebufferSize(), window = ctx_->windowSize();
+  return window.x > 0 && pixels.x > 0 ? float(pixels.x) / float(window.x) : 1.0f;
+}
+
 void LabHost::applyUiScale() {
   const float rows = float(ctx_->framebufferSize().y) / ctx_->contentScale();
-  const float automatic = ctx_->contentScale() * std::max(1.0f, rows / 1080.0f) * (step_ > 0 ? 1.25f : 1.0f);
+  // A Retina display: ImGui draws pixelsPerPoint() times larger by itself (its DisplayFramebufferScale);
+  // the monitor's content scale (2 there too) must not enlarge the panels a second time.
+  const float automatic =
+      ctx_->contentScale() / pixelsPerPoint() * std::max(1.0f, rows / 1080.0f) * (step_ > 0 ? 1.25f : 1.0f);
   imgui_->setScale(lab_->uiScale_ > 0 ? lab_->uiScale_ : automatic);
 }
 
@@ -242,7 +250,7 @@ void LabHost::drawLab() {
         if (programsOk) lab.render();
         target_.resolve();
       },
-      [&](int side) { sides_[side] = lab.light_; }, !stretched());
+      [&](int side) { sides_[side] = lab.light_; }, stretched() ? 0.0f : pixelsPerPoint());
   if (!programsOk) {  // a window whose shaders never compiled says so on the frame, not just sky
     const auto bad = std::find_if(lab.programs_.begin(), lab.programs_.end(), [](const Program& p) { return !p.ok(); });
     const std::string where = firstErrorLine(bad->error());
@@ -320,6 +328,8 @@ void LabHost::finish(RunRecord& record) {
   record.set("exercises", lab_->board().toJson());
   record.set("measurement", lastMeasure_ ? lastMeasure_->toJson() : nlohmann::json());
   record.set("warnings", lab_->warnings_);
+  if (imgui_)  // (the panels' text height in the framebuffer's pixels: 16 per unit of scale, per point)
+    record.set("panel_text_pixels", 16.0f * imgui_->scale() * pixelsPerPoint());
   if (step_ > 0) {
     const DemoStep& s = presenter_->step(step_);
     record.set("demo_step", {{"step", step_},

@@ -76,6 +76,7 @@ class LabHost {
  private:
   void beginUiFrame();
   void applyUiScale();  // the panels' text size: ui.scale, or the monitor's
+  float pixelsPerPoint() const;  // framebuffer pixels per unit of the window's size (2 on a Retina display)
   void handleKeys();
   void upscale(int band, glm::ivec2 shown);  // the frame over the window's scene area (render.scale)
   bool stretched() const { return imgui_ && frameSize_ != viewSize_; }  // render.scale below 1, in a window

@@ -52,7 +52,7 @@ void LabHost::beginUiFrame() {
   if (!io.WantCaptureKeyboard) handleKeys();
   const glm::ivec2 window = ctx_->framebufferSize();
   glm::ivec2 scene = window;
-  if (step_ > 0) scene.y = window.y - Presenter::bandHeight(window);  // the caption's band
+  if (step_ > 0) scene.y = window.y - Presenter::bandHeight(window, pixelsPerPoint());  // the caption's band
   viewSize_ = glm::max(scene, glm::ivec2(16));
   // render.scale: the scene is drawn smaller and stretched over the window; the panels stay sharp.
   frameSize_ = glm::max(glm::ivec2(glm::round(glm::vec2(viewSize_) * lab_->renderScale_)), glm::ivec2(16));
@@ -70,7 +70,7 @@ void LabHost::handleKeys() {
     if (pressed(GLFW_KEY_1 + k) && k < int(lab.scene.cameras.size()))
       lab.bookmark_ = k + 1, lab.camera.pose = lab.scene.cameras[size_t(k)];
   if (pressed(GLFW_KEY_F12) || pressed(GLFW_KEY_P)) screenshotRequested_ = true;
-  if (pressed(GLFW_KEY_H)) panels_.hidePanels = !panels_.hidePanels;
+  if (pressed(GLFW_KEY_H)) lab_->uiPanels_ = !lab_->uiPanels_;
   if (pressed(GLFW_KEY_F11)) fullscreen_ = !fullscreen_, ctx_->setFullscreen(fullscreen_, options_.size);
   stepKeys(pressed);
 }
@@ -127,7 +127,7 @@ void LabHost::presentWindow() {
   if (stretched() && panels_.compare.on && !panels_.compare.key.empty()) {  // the halves' labels, sharp
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, band, shown.x, shown.y);
-    split_.drawLabels(panels_.compare, shown);
+    split_.drawLabels(panels_.compare, shown, pixelsPerPoint());
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, window.x, window.y);
@@ -139,6 +139,7 @@ void LabHost::presentWindow() {
     lab.lightIndex = std::min(lab.lightIndex, int(lab.scene.lights.size()) - 1);
     lab.ui();
   };
+  panels_.hidePanels = !lab.uiPanels_;
   if (step_ == 0)  // presenting: the picture and its caption, no panels
     drawPanels({lab.board_, checks_.get(), timers_, lab.programs_, lab.warnings_, lab.settings, shown, picture_.id(),
                 pictureSize_, labUi},
@@ -149,7 +150,7 @@ void LabHost::presentWindow() {
     auto timer = timers_.scope("panels");
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   }
-  if (step_ > 0) presenter_->drawBand(step_, measureStep_ ? "measuring..." : stepNumbers_, window);
+  if (step_ > 0) presenter_->drawBand(step_, measureStep_ ? "measuring..." : stepNumbers_, window, pixelsPerPoint());
   // In a window, --screenshot captures the last frame as the user sees it, UI included.
   const bool lastFrame = options_.frames > 0 && frameIndex_ == options_.frames - 1 && !options_.screenshot.empty();
   if (screenshotRequested_ || lastFrame) {

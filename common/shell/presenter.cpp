@@ -131,20 +131,24 @@ const DemoStep& Presenter::apply(int k, Settings& settings) const {
 }
 
 // The band holds the title, two lines of caption and the numbers, at 30-pixel captions for 1080 rows.
-int Presenter::bandHeight(glm::ivec2 size) { return std::max(72, size.y * 18 / 100); }
+int Presenter::bandHeight(glm::ivec2 size, float pixelsPerPoint) {
+  return std::max(int(72 * pixelsPerPoint), size.y * 18 / 100);
+}
 
-float Presenter::captionPixels(glm::ivec2 size) { return std::max(10.0f, 30.0f * float(size.y) / 1080.0f); }
+float Presenter::captionPixels(glm::ivec2 size, float pixelsPerPoint) {
+  return std::max(10.0f * pixelsPerPoint, 30.0f * float(size.y) / 1080.0f);
+}
 
-void Presenter::drawBand(int k, const std::string& numbers, glm::ivec2 size) {
+void Presenter::drawBand(int k, const std::string& numbers, glm::ivec2 size, float pixelsPerPoint) {
   const DemoStep& s = step(k);
-  const int band = bandHeight(size), margin = std::max(8, size.x / 80);
+  const int band = bandHeight(size, pixelsPerPoint), margin = std::max(int(8 * pixelsPerPoint), size.x / 80);
   glEnable(GL_SCISSOR_TEST);  // the band is dark, whatever was there
   glScissor(0, 0, size.x, band);
   const float dark[4] = {0.08f, 0.08f, 0.09f, 1};
   glClearBufferfv(GL_COLOR, 0, dark);
   glDisable(GL_SCISSOR_TEST);
   // Sizes follow the window's height (captionPixels); a Label's font is 10 pixels at scale 1.
-  const float unit = captionPixels(size) / 30.0f;
+  const float unit = captionPixels(size, pixelsPerPoint) / 30.0f;
   auto text = [&](const std::string& t) { return label_.hasFont() ? t : ascii(t); };
   const int width = size.x - 2 * margin;
   const std::string title = strf("%d/%d  ", k, count()) + text(s.title);

@@ -45,14 +45,15 @@ class Presenter {
   /// Puts `settings` back to the starting values, then applies step `k`'s (steps do not accumulate,
   /// so paging back shows what paging forward showed); returns the step.
   const DemoStep& apply(int k, Settings& settings) const;
-  /// The caption band's height for a window of `size`.
-  static int bandHeight(glm::ivec2 size);
+  /// The caption band's height for a window of `size` pixels, with `pixelsPerPoint` pixels to each
+  /// unit of the window's size (2 on a Retina display: the smallest band is that much taller).
+  static int bandHeight(glm::ivec2 size, float pixelsPerPoint = 1);
   /// The caption's font size in pixels for a window of `size` (30 at 1080 rows: readable from the
-  /// back of a lecture hall); the title's is 1.13 times it.
-  static float captionPixels(glm::ivec2 size);
+  /// back of a lecture hall; never under 10 points); the title's is 1.13 times it.
+  static float captionPixels(glm::ivec2 size, float pixelsPerPoint = 1);
   /// Draws step `k`'s title, caption and `numbers` in the band (the bottom `bandHeight` rows of the
   /// bound framebuffer of `size`).
-  void drawBand(int k, const std::string& numbers, glm::ivec2 size);
+  void drawBand(int k, const std::string& numbers, glm::ivec2 size, float pixelsPerPoint = 1);
   /// The measured numbers worth saying out loud, on one line.
   static std::string numbersLine(const MeasureResult& r);
 

@@ -8,7 +8,7 @@ namespace wb {
 
 void SplitScreen::render(FrameTarget& target, Settings& settings, const CompareChoice& choice,
                          const std::function<void()>& draw, const std::function<void(int side)>& afterDraw,
-                         bool labels) {
+                         float labels) {
   const bool split = choice.on && !choice.key.empty();
   if (!split) {
     draw();
@@ -39,18 +39,21 @@ void SplitScreen::render(FrameTarget& target, Settings& settings, const CompareC
   const float white[4] = {1, 1, 1, 1};
   glClearBufferfv(GL_COLOR, 0, white);
   glDisable(GL_SCISSOR_TEST);
-  if (labels) drawLabels(choice, size);
+  if (labels > 0) drawLabels(choice, size, labels);
 }
 
-void SplitScreen::drawLabels(const CompareChoice& choice, glm::ivec2 size) {
+void SplitScreen::drawLabels(const CompareChoice& choice, glm::ivec2 size, float pixelsPerPoint) {
   // Each half says what it shows, in the picture itself (a headless screenshot has no panels).
-  // (as large as a lecture room needs: 2.25 at 540 rows, 4.5 at 1080, and never wider than the half)
-  const int half = size.x / 2;
+  // (as large as a lecture room needs: 2.25 at 540 rows, 4.5 at 1080, and never wider than the half;
+  // rows and sizes in points: a Retina display has pixelsPerPoint pixels to each)
+  const int half = size.x / 2, margin = int(8 * pixelsPerPoint);
   const std::string left = choice.key + " = " + choice.a, right = choice.key + " = " + choice.b;
-  const float most = size.y >= 400 ? size.y / 240.0f : 1.0f;
-  const float scale = std::min(label_.scaleToFit(left, half - 24, most), label_.scaleToFit(right, half - 24, most));
-  label_.draw(left, {8, size.y - int(13 * scale)}, size, scale);
-  label_.draw(right, {half + 8, size.y - int(13 * scale)}, size, scale);
+  const float rows = float(size.y) / pixelsPerPoint;
+  const float most = (rows >= 400 ? rows / 240.0f : 1.0f) * pixelsPerPoint;
+  const float scale = std::min(label_.scaleToFit(left, half - 3 * margin, most),
+                               label_.scaleToFit(right, half - 3 * margin, most));
+  label_.draw(left, {margin, size.y - int(13 * scale)}, size, scale);
+  label_.draw(right, {half + margin, size.y - int(13 * scale)}, size, scale);
 }
 
 }  // namespace wb

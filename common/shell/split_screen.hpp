@@ -18,12 +18,12 @@ class SplitScreen {
  public:
   /// Calls `draw` once, or with `choice.on` twice (setting `choice.key` to A, then B, then back);
   /// `afterDraw(side)` runs after each (side 0 = left or whole frame, 1 = right).
-  /// With `labels` false the halves' labels are left out of the frame (a window that stretches the
-  /// frame, render.scale, draws them sharp itself with drawLabels()).
+  /// The halves' labels are drawn with `labels` pixels per point (drawLabels()); with 0 they are left
+  /// out of the frame (a window that stretches the frame, render.scale, draws them sharp itself).
   void render(FrameTarget& target, Settings& settings, const CompareChoice& choice, const std::function<void()>& draw,
-              const std::function<void(int side)>& afterDraw, bool labels = true);
+              const std::function<void(int side)>& afterDraw, float labels = 1);
   /// Writes each half's setting at its bottom left, into the bound framebuffer's viewport of `size`.
-  void drawLabels(const CompareChoice& choice, glm::ivec2 size);
+  void drawLabels(const CompareChoice& choice, glm::ivec2 size, float pixelsPerPoint = 1);
 
  private:
   Texture saved_[3];  // the left half's attachments while the right half is drawn

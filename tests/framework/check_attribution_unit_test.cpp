@@ -1,5 +1,5 @@
 // What check says where the student edition cannot isolate an exercise (tests/harness/attribution.hpp),
-// and the endless-loop reading of a count of 65535 (diagnosis.cpp). This binary runs as the student
+// and the endless-loop reading of a count of 50000 (diagnosis.cpp). This binary runs as the student
 // edition does: its variant has no solution folder.
 #include "common/base/variant.hpp"
 #include "tests/harness/attribution.hpp"
@@ -109,19 +109,19 @@ TEST(CheckAttribution, AStubStaysNotImplemented) {
   EXPECT_EQ(first["07.4"].verdict, "NOT IMPLEMENTED");
 }
 
-// llvmpipe stops a loop after 65535 iterations: a count of exactly that is named as an endless loop;
-// a count near it is not.
+// The loop guard stops an exercise's loops after 50000 steps (loop_guard.hpp): a count of exactly
+// that is named as an endless loop; a count near it is not.
 // (gtest's message for ASSERT_NEAR(got, 30, 0.001), then ours)
 std::string nearFailure(const std::string& got) {
   return "The difference between got and 30 is 1, which exceeds 0.001, where\ngot evaluates to " + got +
          ",\n30 evaluates to 30, and\n0.001 evaluates to 0.001.\nWRONG: the number of blockers among 32 taps";
 }
 
-TEST(CheckDiagnosis, ACountOf65535IsAnEndlessLoop) {
-  const auto looped = wb::test::diagnose("Lab07.Ex07_2_X", nearFailure("65535"));
+TEST(CheckDiagnosis, ACountOfTheLoopGuardsStepsIsAnEndlessLoop) {
+  const auto looped = wb::test::diagnose("Lab07.Ex07_2_X", nearFailure("50000"));
   bool named = false;
   for (const auto& l : looped.details) named |= l.find("looks like an endless loop") != std::string::npos;
   EXPECT_TRUE(named);
-  const auto other = wb::test::diagnose("Lab07.Ex07_2_X", nearFailure("65534"));
+  const auto other = wb::test::diagnose("Lab07.Ex07_2_X", nearFailure("49999"));
   for (const auto& l : other.details) EXPECT_EQ(l.find("endless loop"), std::string::npos) << l;
 }

@@ -1,27 +1,26 @@
 #!/usr/bin/env bash
-# ./workbook check runs each exercise's runner alone, in a session of its own, with a time limit
-# (run_exercise_runner): a runner that loops forever is stopped at the limit with every process it
+# ./workbook check (wb_check, tests/harness/supervisor.hpp, the same on every OS) runs each
+# exercise's runner alone, in a session of its own, with a time limit: a runner that loops forever is stopped at the limit with every process it
 # started, and one that crashes is named with its signal; both reasons reach the judge
 # (stopped.txt), and the other exercises' records are kept; one that prints without end is stopped
-# when its log reaches the cap, which says that it was cut. The judge is bounded too (run_judge): one
+# when its log reaches the cap, which says that it was cut. The judge is bounded too: one
 # that never ends is stopped at its limit, naming the test it was in. A fake lab stands in for the
 # build: 77.1 records, 77.2 loops (with a child that would outlive it), 77.3 crashes, 77.4 floods.
-# Usage: workbook_check_limits_test.sh SCRATCH_DIR
+# Usage: workbook_check_limits_test.sh WB_CHECK SCRATCH_DIR
 set -uo pipefail
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-tmp=${1:?usage: workbook_check_limits_test.sh SCRATCH_DIR}
+check=${1:?usage: workbook_check_limits_test.sh WB_CHECK SCRATCH_DIR}
+tmp=${2:?usage: workbook_check_limits_test.sh WB_CHECK SCRATCH_DIR}
 rm -rf "$tmp" && mkdir -p "$tmp/build"
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-# shellcheck source=/dev/null
-source "$root/workbook"  # (the functions only)
 cd "$tmp" || exit 1
 cat >build/lab77_tests <<'FAKE'
 #!/usr/bin/env bash
 dir=$2 filter=$3
 mkdir -p "$dir"
 case $filter in
-  *Ex77_1_*) echo '{"key":"Lab77.Ex77_1_A#0","value":1}' >"$dir/tape.jsonl" ;;
+  *Ex77_1_*) echo '{"key":"Lab77.Ex77_1_A#0","value":1}' >"$dir/tape.jsonl"
+    sleep 1000 & echo $! >"$dir/../left.pid" ;;  # (ends, leaving a process behind)
   *Ex77_2_*) sleep 1000 & echo $! >"$dir/../child.pid"; while :; do :; done ;;
   *Ex77_3_*) echo "crashed (SIGSEGV: test) in exercise 77.3, at labs/77_fake/exercise.cpp:9 (f)" >&2; kill -SEGV $$ ;;
   *Ex77_4_*) exec yes "a debug print in a loop" ;;
@@ -32,7 +31,7 @@ tape=$tmp/tape
 mkdir -p "$tape/all"
 start=$(date +%s)
 export WB_CHECK_LOG_MB=1
-for id in 77.1 77.2 77.3 77.4; do run_exercise_runner 77 "$id" "$tape" 3 2>/dev/null; done
+for id in 77.1 77.2 77.3 77.4; do WB_CHECK_TIMEOUT=3 "$check" --runner build/lab77_tests "$id" "$tape"; done
 took=$(($(date +%s) - start))
 [ "$took" -le 12 ] || fail "four runners with a 3 s limit took $took s"
 grep -q '"Lab77.Ex77_1_A#0"' "$tape/all/tape.jsonl" || fail "77.1's record was not kept: $(cat "$tape/all/tape.jsonl")"
@@ -54,12 +53,13 @@ cat >build/lab77_judge <<'FAKE'
 for t in A B C; do echo "Lab77.Ex77_1_$t" >"$WB_PROGRESS_FILE"; sleep 1; done
 [[ " $* " == *" --gtest_filter=-Lab77.Ex77_2_Loops "* ]] && { echo "the table, without the endless test"; exit 1; }
 echo "Lab77.Ex77_2_Loops" >"$WB_PROGRESS_FILE"
+sleep 1000 & echo $! >"$WB_PROGRESS_FILE.child"
 while :; do :; done
 FAKE
 chmod +x build/lab77_judge
 start=$(date +%s)
 code=0
-out=$(WB_CHECK_JUDGE_TIMEOUT=2 run_judge 77 build/lab77_judge "$tape" labs/77_fake 3 2>&1) || code=$?
+out=$(WB_CHECK_JUDGE_TIMEOUT=2 WB_CHECK_TIMEOUT=3 "$check" --judge 77 build/lab77_judge "$tape" labs/77_fake 2>&1) || code=$?
 took=$(($(date +%s) - start))
 [ "$took" -le 20 ] || fail "an endless judge test with a 2 s limit per test took $took s"
 [ "$code" = 1 ] || fail "the judge's second run (the table) should give its own exit code 1, got $code"
@@ -73,5 +73,9 @@ child=$(cat "$tape/child.pid" 2>/dev/null)
 alive() { [ -n "$(ps -o stat= -p "$1" 2>/dev/null | grep -v Z)" ]; }  # (a zombie waits for its reaper only)
 for _ in 1 2 3 4 5 6 7 8 9 10; do alive "$child" || break; sleep 0.2; done
 [ -n "$child" ] && ! alive "$child" || fail "a process the endless runner started is still running ($child)"
+left=$(cat "$tape/left.pid" 2>/dev/null)
+[ -n "$left" ] && ! alive "$left" || fail "a process a finished runner left behind is still running ($left)"
+judged=$(cat "$tape/judging.txt.child" 2>/dev/null)
+[ -n "$judged" ] && ! alive "$judged" || fail "a process the stopped judge started is still running ($judged)"
 [ "$failures" = 0 ] && echo "check's limits: a loop stopped with its children, a crash named, a flood cut, an endless judge stopped, the rest kept"
 exit $((failures > 0))

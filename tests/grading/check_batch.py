@@ -19,7 +19,7 @@ def check(cond, what):
 
 # The reason each broken submission must give for the exercise it loses.
 reasons = {"compile_error": "does not compile", "segfault": "SIGSEGV", "endless_loop_cpp": "timed out",
-           "endless_loop_glsl": ("timed out", "WRONG"),  # llvmpipe ends any shader loop after 65535 turns
+           "endless_loop_glsl": ("timed out", "WRONG"),  # the loop guard ends an exercise's loops after 50000 steps
            "one_wrong": "WRONG", "stubs": "NOT IMPLEMENTED", "archive": "not in the submission",
            "endless_build": "the build timed out after", "forged_report": "NOT IMPLEMENTED",
            "symlink": "is a link", "empty_glsl": "ERROR", "memory_bomb": "used more than 2 GiB of memory",

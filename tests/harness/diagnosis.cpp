@@ -1,5 +1,7 @@
 #include "tests/harness/diagnosis.hpp"
 
+#include "common/platform/loop_guard.hpp"
+
 #include "common/base/variant.hpp"
 
 #include <nlohmann/json.hpp>
@@ -146,12 +148,12 @@ Diagnosis diagnose(const std::string& test, const std::string& message) {
     if (const auto gw = gotWant(gtest, d.got)) d.details.push_back(*gw);
     // (a shader's time against the reference's is no signature of a mistake: it varies from run to run)
     if (!d.got && d.headline.find("longer than the reference") == std::string::npos) d.got = firstNumber(d.headline);
-    // llvmpipe stops a loop after 65535 iterations (gallivm's cap; a GPU's driver would hang instead):
+    // The loop guard stops an exercise's loops after kLoopGuardSteps steps (a GPU would hang instead):
     // a count of exactly that, where it should be another, is a loop that never ends.
-    if (d.got && (*d.got == 65535 || *d.got == 65536))
-      d.details.push_back(
-          "looks like an endless loop: it ran 65535 iterations, the most Mesa's llvmpipe runs one "
-          "for; on a GPU it would hang (does the loop's counter change?)");
+    if (d.got && (*d.got == kLoopGuardSteps || *d.got == kLoopGuardSteps + 1))
+      d.details.push_back("looks like an endless loop: it ran " + std::to_string(kLoopGuardSteps) +
+                          " steps, the most the workbook lets an exercise's loops run; on a GPU it would hang "
+                          "(does the loop's counter change?)");
     if (d.got)
       if (const std::string hint = knownMistake(test, *d.got); !hint.empty())
         d.details.push_back(hint.rfind("one of these:", 0) == 0 ? "looks like a known mistake, " + hint

@@ -6,13 +6,12 @@
 #include "common/exercise/glsl_harness.hpp"
 #include "common/exercise/run_record.hpp"
 #include "common/platform/context.hpp"
+#include "common/platform/process.hpp"
 #include "common/platform/shader.hpp"
 #include "tests/harness/isolation.hpp"
 #include "tests/harness/picture.hpp"
 #include "tests/harness/reference_calls.hpp"
 #include "tests/harness/tape.hpp"
-
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -174,14 +173,14 @@ IsolatedShaders::IsolatedShaders(const std::string& id) : dir_(outputDir() / ("i
   fs::create_directories(dir_);
   for (const std::string& file : glslExerciseFiles()) std::ofstream(dir_ / file) << isolatedExerciseSource(file, id);
   if (const char* old = std::getenv("WB_SHADER_OVERLAY")) previous_ = old, hadPrevious_ = true;
-  setenv("WB_SHADER_OVERLAY", dir_.c_str(), 1);
+  setEnv("WB_SHADER_OVERLAY", dir_.string().c_str());
 }
 
 IsolatedShaders::~IsolatedShaders() {
   if (hadPrevious_)
-    setenv("WB_SHADER_OVERLAY", previous_.c_str(), 1);
+    setEnv("WB_SHADER_OVERLAY", previous_.c_str());
   else
-    unsetenv("WB_SHADER_OVERLAY");
+    setEnv("WB_SHADER_OVERLAY", nullptr);
 }
 
 std::string IsolatedShaders::text(const std::string& file) const { return readFile(dir_ / file); }
@@ -264,7 +263,7 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
     if (fs::exists(out / "upstream.json"))  // the inputs the graded exercise had (keepOnlyCalls)
       all.insert(all.end(), {"--replay-exercises", (out / "upstream.json").string()});
     fs::remove(refPfm);
-    if (runApp(out, "", trustedExe(), all, out / "reference.log").first != 0 || !fs::exists(refPfm))
+    if (runApp(out, {}, trustedExe(), all, out / "reference.log").first != 0 || !fs::exists(refPfm))
       FAIL() << "ERROR: the reference render of the varied scene failed (a fault of the grader):\n"
              << readFile(out / "reference.log");
     ref = readPfm(refPfm);

@@ -40,7 +40,7 @@ std::vector<glm::vec4> runExercise(const std::string& id, const std::string& bod
                                    const std::vector<glm::vec4>& inputs, const std::vector<unsigned>& textures = {});
 
 /// A GLSL exercise whose kernel runs far longer than the reference's on the same inputs (an endless
-/// loop, which llvmpipe cuts off after 65535 iterations and a GPU would hang on): WRONG.
+/// loop, which the loop guard cuts off after 50000 steps and a GPU would hang on): WRONG.
 struct SlowShader : wb::Error {
   using wb::Error::Error;
 };

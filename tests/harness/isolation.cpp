@@ -4,12 +4,11 @@
 #include "common/exercise/exercise_chunks.hpp"
 #include "common/exercise/exercise_tape.hpp"
 #include "common/exercise/glsl_harness.hpp"
+#include "common/platform/process.hpp"
 #include "common/platform/shader.hpp"
 #include "tests/harness/harness.hpp"
 #include "tests/harness/reference_calls.hpp"
 #include "tests/harness/tape.hpp"
-
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -21,13 +20,6 @@
 namespace fs = std::filesystem;
 
 namespace wb::test {
-namespace {
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-}  // namespace
 
 // The seed of grading-time variations (WB_VARY_SEED, set by the grader), or -1: scenes are then
 // turned a little (--vary), and compared with the solution's render of the same variation instead
@@ -43,21 +35,24 @@ static std::vector<std::string> varyArgs() {
 
 // Runs `exe --headless args` (plus the variation, if any) from `out` with a time limit, its output
 // in `log`: the exit status and the command. From its output folder, so nothing it writes lands
-// where the tests were started.
-std::pair<int, std::string> runApp(const fs::path& out, const std::string& env, const std::string& exe,
+// where the tests were started. Stopped at the limit with whatever it started (process.hpp).
+std::pair<int, std::string> runApp(const fs::path& out, const Env& env, const std::string& exe,
                                    const std::vector<std::string>& args, const fs::path& log) {
   const char* limit = std::getenv("WB_RUN_TIMEOUT");  // seconds for one lab run (check sets it; else 120)
-  const int seconds = limit && std::atoi(limit) > 0 ? std::atoi(limit) : 120;
-  std::string cmd = "cd " + quote(out.string()) + " && " + env + "timeout " + std::to_string(seconds) + " " +
-                    quote(exe) + " --headless";
-  for (const auto& a : args) cmd += " " + quote(a);
-  for (const auto& a : varyArgs()) cmd += " " + quote(a);
-  const int status = std::system((cmd + " >" + quote(log.string()) + " 2>&1").c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : 128, cmd};
+  ProcessSpec spec;
+  spec.cwd = out, spec.env = env, spec.log = log;
+  spec.timeoutSeconds = limit && std::atoi(limit) > 0 ? std::atoi(limit) : 120;
+  spec.graceSeconds = 3;  // (its crash report, from the SIGTERM, names where it was: addr2line takes a moment)
+  spec.argv = {exe, "--headless"};
+  for (const auto& a : args) spec.argv.push_back(a);
+  for (const auto& a : varyArgs()) spec.argv.push_back(a);
+  const ProcessResult r = runProcess(spec);
+  if (r.end == ProcessResult::End::NotStarted) std::ofstream(log) << "the lab did not start: " << r.detail << "\n";
+  return {r.code, shellCommand(spec)};
 }
 
 // runApp() as JSON: {"code", "log" (its start and end when long), "command"}.
-static nlohmann::json runAppJson(const fs::path& out, const std::string& env, const std::string& exe,
+static nlohmann::json runAppJson(const fs::path& out, const Env& env, const std::string& exe,
                                  const std::vector<std::string>& args) {
   fs::create_directories(out);
   const fs::path log = out / "lab.log";
@@ -77,13 +72,13 @@ std::string trustedExe() { return variant::kSolutionExe[0] ? variant::kSolutionE
 
 // The environment that makes an app use `id`'s isolated GLSL (the submission's chunk of a GLSL
 // exercise and the solution's other chunks; all solution for a C++ exercise), written into `out`.
-static std::string isolatedGlsl(const std::string& id, const fs::path& out) {
-  if (updatingGolden()) return "";
+static Env isolatedGlsl(const std::string& id, const fs::path& out) {
+  if (updatingGolden()) return {{"WB_STRICT_GL", "1"}};
   // (Without the solution, isolatedExerciseSource() is the submission's whole file: the files the
   // student edition's app reads anyway, and a submission's when WB_SUBMISSION_DIR names one.)
   for (const std::string& file : glslExerciseFiles())  // exercise.glsl, and a stage file such as a .geom
     std::ofstream(out / file) << isolatedExerciseSource(file, id);
-  return "WB_SHADER_OVERLAY=" + quote(out.string()) + " ";
+  return {{"WB_STRICT_GL", "1"}, {"WB_SHADER_OVERLAY", out.string()}};
 }
 
 // The reference's results for every C++ exercise but `id` in a run with `args` (reference_calls.hpp),
@@ -111,7 +106,7 @@ static nlohmann::json runDirect(const std::string& id, const fs::path& out, cons
   } else if (const fs::path others = referenceOthers(id, out, args); !others.empty()) {
     all = joined(args, {"--replay-exercises", others.string()});
   }
-  auto run = runAppJson(out, "WB_STRICT_GL=1 " + isolatedGlsl(id, out), exe, all);
+  auto run = runAppJson(out, isolatedGlsl(id, out), exe, all);
   if (updatingGolden() && keepReferenceCalls(reference)) std::printf("updated %s\n", reference.string().c_str());
   return run;
 }
@@ -134,9 +129,10 @@ static std::vector<std::string> runnerArgs(const std::vector<std::string>& args)
 // The environment of a runner's lab run, which only records what the C++ exercises return: with
 // the stub shaders when the grader gives them (WB_RECORD_SHADERS), so that the student's GLSL, which
 // the judge grades on its own, cannot stop the C++ exercises' runs.
-static std::string recordEnv() {
+static Env recordEnv() {
   const char* stubs = std::getenv("WB_RECORD_SHADERS");
-  return std::string("WB_STRICT_GL=1 ") + (stubs && *stubs ? "WB_SHADER_OVERLAY=" + quote(stubs) + " " : "");
+  if (stubs && *stubs) return {{"WB_STRICT_GL", "1"}, {"WB_SHADER_OVERLAY", stubs}};
+  return {{"WB_STRICT_GL", "1"}};
 }
 
 // A runner's lab run under tape key `key`: this build's app records what its C++ exercises return
@@ -246,7 +242,7 @@ static nlohmann::json drawExercise(const std::string& id, const fs::path& out, c
     throw Error("planned");
   }
   if (glsl && tapeMode() == TapeMode::Record) throw Error("recorded for the judge");
-  if (glsl) return runAppJson(out, "WB_STRICT_GL=1 " + isolatedGlsl(id, out), trustedExe(), withOthers(id, out, args));
+  if (glsl) return runAppJson(out, isolatedGlsl(id, out), trustedExe(), withOthers(id, out, args));
   const auto mine = recordRun(key, out, runnerArgs(args), id, args);
   const fs::path calls = out / "exercises.json";
   if (tapeMode() == TapeMode::Record) throw Error("recorded for the judge");
@@ -254,7 +250,7 @@ static nlohmann::json drawExercise(const std::string& id, const fs::path& out, c
   if (!fs::exists(calls) || !keepOnlyCalls(calls, id, out / "upstream.json"))
     throw Error("your lab never ran exercise " + id + " in this scene (its run left no result):\n" +
                 (heldOutJudging() ? std::string("(held-out run)") : mine.value("log", std::string())));
-  return runAppJson(out, "WB_STRICT_GL=1 " + isolatedGlsl(id, out), trustedExe(), withOthers(id, out, args, calls));
+  return runAppJson(out, isolatedGlsl(id, out), trustedExe(), withOthers(id, out, args, calls));
 }
 
 // Draws exercise `id` (drawExercise) with a record, and reads it. Fails with ERROR / NOT

@@ -17,9 +17,12 @@ namespace wb::test {
 /// The seed of grading-time variations (WB_VARY_SEED, set by the grader), or -1.
 long long varySeed();
 
+/// Variables set for a lab run, over the test's own environment.
+using Env = std::vector<std::pair<std::string, std::string>>;
+
 /// Runs `exe --headless args` (plus the variation, if any) from `out` with a time limit, its output
-/// in `log`: the exit status and the command.
-std::pair<int, std::string> runApp(const std::filesystem::path& out, const std::string& env, const std::string& exe,
+/// in `log`: the exit status (124 past the limit, 128 + a crash's signal) and the command.
+std::pair<int, std::string> runApp(const std::filesystem::path& out, const Env& env, const std::string& exe,
                                    const std::vector<std::string>& args, const std::filesystem::path& log);
 
 /// The app a judge trusts: the solution's (this build's in the student edition, which has none).

@@ -376,8 +376,9 @@ static_assert(CompileTimeSteps<800>::value == 800, "800 steps");
         # The loop reads and writes a parameter the function goes on to use, and whether it ends
         # depends on that value, so no compiler can drop it. In GLSL it never ends (the value steps
         # past 12345.678, then stalls at 2^24); on a GPU it hangs until the grader's time limit.
-        # Mesa's llvmpipe cuts every shader loop off after 65535 iterations, so there the parameter
-        # comes out wrong instead: either way only this exercise is lost.
+        # The workbook's loop guard (common/platform/loop_guard.hpp) stops an exercise's loops after
+        # 50000 steps on any GL implementation, so the parameter comes out wrong instead: only this
+        # exercise is lost.
         text = (d / "labs" / lab / e["file"]).read_text()
         signature = text[text.index(f"// EXERCISE {e['id']}"):].split("\n", 1)[1]
         kind, param = re.search(r"\w+\s*\(\s*(?:in\s+)?(\w+)\s+(\w+)", signature).groups()

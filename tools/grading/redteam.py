@@ -143,7 +143,7 @@ def sandbox_cheats(out, full, expect, cpp, glsl, the_labs, stubs_of, second_copy
     st.prepend(full("fork_bomb"), lab, e_cpp["file"], FORK_BOMB)
     expect("fork_bomb", [])
     d = full("glsl_endless_same")
-    # Endless in GLSL (the value stalls at 2^24); llvmpipe stops it after 65535 turns, and then the
+    # Endless in GLSL (the value stalls at 2^24); the loop guard stops it after 50000 steps, and then the
     # test is false, so the result is the reference's. The test keeps the loop from being dropped.
     text = (d / "labs" / glsl_lab / e_glsl["file"]).read_text()
     signature = text[text.index(f"// EXERCISE {e_glsl['id']}"):].split("\n", 1)[1]

@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
-# The Windows smoke test, run on Debian 12: cross-builds the framework and lab 01 with MinGW-w64,
-# runs lab01 headless under Wine (whose OpenGL is the host's Mesa, through WGL), at Mesa's own
-# version and capped at OpenGL 4.1 core, and compares both PNGs with a native Linux render.
-#   tools/platforms/windows/cross_build.sh [WORK]      (WORK: default build-windows/; about 10 minutes the first
-#                                             time on 2 cores, most of it Embree)
+# Windows, as far as Debian 12 can show it: cross-builds every lab (its app, its solution, both test
+# binaries) and wb_check with MinGW-w64; runs every lab's solution headless under Wine (whose OpenGL
+# is the host's Mesa, through WGL), capped at OpenGL 4.1 core, and compares each picture with the
+# Linux render; then runs check (wb_check.exe) under Wine on the check cases of a C++ lab and a
+# GLSL-only lab (tests/check_cases/: a mutant, an endless loop, a crash or compile error) and compares
+# every exercise's verdict with Linux's wb_check on the same case.
+#   tools/platforms/windows/cross_build.sh [WORK]      (WORK: default build-windows/; the first time,
+#                                             about 10 minutes of dependencies, most of it Embree)
 # The dependencies come from Debian's source packages (apt-get source: a deb-src line is added):
 # GLFW 3.3.8, Dear ImGui 1.86, GoogleTest 1.12.1 and Embree 3.13.5 (SSE2, triangles, internal
 # tasking; three CMake-only fixes for MinGW in embree-3.13.5-mingw.patch), built static.
@@ -70,33 +73,74 @@ mkdir -p "$WB_WIN_PREFIX/include" "$WB_WIN_PREFIX/share/cmake"
 cp -r /usr/include/glm /usr/include/stb /usr/include/nlohmann "$WB_WIN_PREFIX/include/"
 cp -r /usr/share/cmake/glm /usr/share/cmake/nlohmann_json "$WB_WIN_PREFIX/share/cmake/"
 
-lab=lab01_solution; [ -d "$ROOT/solutions" ] || lab=lab01  # (the student edition has no solution)
-step "the workbook's framework and $lab for Windows"
+[ -d "$ROOT/solutions" ] || { echo "cross_build: the instructor edition is needed (solutions and check cases)" >&2; exit 1; }
+labs=(); for d in "$ROOT"/labs/[0-9][0-9]_*/; do labs+=("$(basename "$d")"); done
+case_labs=(01 03)  # (a lab with C++ exercises, and one whose exercises are all GLSL)
+cases=(); for nn in "${case_labs[@]}"; do
+  for f in "$ROOT"/tests/check_cases/"$nn"_*/*.case; do cases+=("$nn:$(basename "$f" .case)"); done
+done
+targets=(wb_check); linux_targets=(wb_check)
+for lab in "${labs[@]}"; do
+  nn=${lab:0:2}
+  targets+=("lab$nn" "lab${nn}_solution" "lab${nn}_tests" "lab${nn}_solution_tests")
+  linux_targets+=("lab${nn}_solution")
+done
+for nn in "${case_labs[@]}"; do linux_targets+=("lab${nn}_solution_tests"); done
+for c in "${cases[@]}"; do  # (a C++ case has a build of its own; a GLSL case only its folder)
+  [ -f "$ROOT/tests/check_cases/${c%%:*}"_*/"${c#*:}.case" ] &&
+    grep -q "^file: exercise.cpp" "$ROOT"/tests/check_cases/"${c%%:*}"_*/"${c#*:}.case" &&
+    targets+=("lab${c%%:*}_mutant_${c#*:}_tests") linux_targets+=("lab${c%%:*}_mutant_${c#*:}_tests")
+done
+step "the workbook for Windows: ${#targets[@]} targets (every lab, its solution and both test binaries)"
 cmake -S "$ROOT" -B "$WORK/wb" "${TOOLCHAIN[@]}" -DWB_REGISTER_TESTS=OFF >"$WORK/wb-configure.log"
-nice cmake --build "$WORK/wb" --target "$lab" -j"$JOBS" >"$WORK/wb-build.log"
-step "$lab for Linux (the picture to compare with)"
+nice cmake --build "$WORK/wb" --target "${targets[@]}" -j"$JOBS" >"$WORK/wb-build.log" 2>&1 ||
+  { tail -30 "$WORK/wb-build.log"; exit 1; }
+echo "warnings in the Windows build: $(grep -c "warning:" "$WORK/wb-build.log")"
+step "the same for Linux (the pictures and verdicts to compare with)"
 cmake -S "$ROOT" -B "$WORK/linux" -DCMAKE_BUILD_TYPE=Release -DWB_REGISTER_TESTS=OFF >"$WORK/linux-configure.log"
-nice cmake --build "$WORK/linux" --target "$lab" -j"$JOBS" >"$WORK/linux-build.log"
+nice cmake --build "$WORK/linux" --target "${linux_targets[@]}" -j"$JOBS" >"$WORK/linux-build.log" 2>&1 ||
+  { tail -30 "$WORK/linux-build.log"; exit 1; }
 
-step "$lab.exe under Wine, headless (a hidden GLFW window), 480x270"
 export WINEPREFIX=$WORK/wineprefix WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,mshtml="
-args=(--headless --size 480x270 --frames 3)
-"$WORK/linux/$lab" "${args[@]}" --screenshot "$WORK/linux.png" >/dev/null
+export MESA_GL_VERSION_OVERRIDE=4.1FC MESA_GLSL_VERSION_OVERRIDE=410  # (both sides: what a Mac has)
 status=0
-for cap in "" 4.1; do
-  png=$WORK/wine${cap:+-gl$cap}.png
-  rm -f "$png"
-  env ${cap:+MESA_GL_VERSION_OVERRIDE=$cap MESA_GLSL_VERSION_OVERRIDE=410} timeout 300 \
-    xvfb-run -a -s "-screen 0 1280x800x24" /usr/lib/wine/wine64 "$WORK/wb/$lab.exe" "${args[@]}" \
-    --screenshot "Z:$png" --record "Z:$png.json" >"$png.log" 2>&1 || true
+step "every solution under Wine, headless (a hidden GLFW window), 480x270, against the Linux render"
+for lab in "${labs[@]}"; do
+  nn=${lab:0:2} png=$WORK/pictures/lab$nn
+  mkdir -p "$WORK/pictures" && rm -f "$png"-*.png
+  args=(--headless --size 480x270 --frames 3)
+  "$WORK/linux/lab${nn}_solution" "${args[@]}" --screenshot "$png-linux.png" >"$png-linux.log" 2>&1
+  timeout 300 xvfb-run -a -s "-screen 0 1280x800x24" /usr/lib/wine/wine64 "$WORK/wb/lab${nn}_solution.exe" \
+    "${args[@]}" --screenshot "Z:$png-wine.png" >"$png-wine.log" 2>&1 || true
   /usr/lib/wine/wineserver64 -k 2>/dev/null || true
-  if [ ! -f "$png" ]; then
-    echo "cross_build: the Wine run${cap:+ capped at $cap} wrote no picture; its output:"; cat "$png.log"; status=1
-    continue
+  if [ ! -f "$png-wine.png" ]; then
+    echo "lab $nn: the Wine run wrote no picture: $(tail -3 "$png-wine.log")"; status=1; continue
   fi
-  echo "Wine${cap:+ capped at OpenGL $cap}: $(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["gl_version"])' "$png.json")"
-  python3 "$HERE/compare_png.py" "$png" "$WORK/linux.png" | tee "$png.compare"
+  python3 "$HERE/compare_png.py" "$png-wine.png" "$png-linux.png" >"$png.compare"
+  echo "lab $nn: $(grep "pixels differing" "$png.compare")"
   grep -q "pixels differing by > 2/255 in any channel: 0 of" "$png.compare" || status=1
 done
-[ "$status" = 0 ] && echo "cross_build: $lab.exe runs under Wine and draws the Linux picture, pixel for pixel"
+
+step "check under Wine (wb_check.exe) and on Linux, on every check case of labs ${case_labs[*]}"
+verdicts() { sed -n 's/^  \([0-9][0-9]\.[0-9x]*\)  \(passes its tests\|passes own tests\|not implemented\|wrong\|error\) .*/\1 \2/p' "$1"; }
+for c in "${cases[@]}"; do
+  nn=${c%%:*} name=${c#*:} lab=""
+  for l in "${labs[@]}"; do [ "${l:0:2}" = "$nn" ] && lab=$l; done
+  tests=lab${nn}_solution_tests; [ -x "$WORK/linux/lab${nn}_mutant_${name}_tests" ] && tests=lab${nn}_mutant_${name}_tests
+  out=$WORK/check/$nn-$name && rm -rf "$out" && mkdir -p "$out"
+  "$WORK/linux/wb_check" "$nn" --root "$ROOT" --tests "$WORK/linux/$tests" --judge "$WORK/linux/lab${nn}_solution_tests" \
+    --submission "$WORK/linux/mutants/$lab/$name" --tape "$out/linux-tape" >"$out/linux.txt" 2>&1
+  start=$(date +%s)
+  timeout 600 xvfb-run -a -s "-screen 0 1280x800x24" /usr/lib/wine/wine64 "$WORK/wb/wb_check.exe" "$nn" --root "Z:$ROOT" \
+    --tests "Z:$WORK/wb/$tests.exe" --judge "Z:$WORK/wb/lab${nn}_solution_tests.exe" \
+    --submission "Z:$WORK/wb/mutants/$lab/$name" --tape "Z:$out/wine-tape" >"$out/wine.txt" 2>&1
+  /usr/lib/wine/wineserver64 -k 2>/dev/null || true
+  if [ -n "$(verdicts "$out/linux.txt")" ] && [ "$(verdicts "$out/linux.txt")" = "$(verdicts "$out/wine.txt")" ]; then
+    echo "lab $nn $name: the same verdicts ($(( $(date +%s) - start )) s under Wine): $(verdicts "$out/wine.txt" | tr '\n' ';')"
+  else
+    echo "lab $nn $name: the verdicts differ: Linux: $(verdicts "$out/linux.txt" | tr '\n' ';') Wine: $(verdicts "$out/wine.txt" | tr '\n' ';')"
+    status=1
+  fi
+done
+[ "$status" = 0 ] && echo "cross_build: every lab draws the Linux picture under Wine, and check gives Linux's verdicts"
 exit "$status"
