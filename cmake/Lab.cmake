@@ -245,7 +245,7 @@ endfunction()
 # A check case (tests/check_cases/NN_name/NAME.case: a mutant's find/replace, a crash or an endless
 # loop among them): wb_check on it, as a student's check runs, must print each `expect:` line's
 # pattern (a row of its verdict table). tools/platforms/windows/cross_build.sh gives the same cases
-# to wb_check.exe under Wine and compares the verdicts. Label checkcase (in `./workbook test --heavy`).
+# to wb_check.exe under Wine and compares the verdicts. Label checkcase.
 function(_wb_check_case nn name tests case_file case_dir)
   file(STRINGS ${case_file} expects REGEX "^expect: ")
   list(TRANSFORM expects REPLACE "^expect: " "")
@@ -253,8 +253,10 @@ function(_wb_check_case nn name tests case_file case_dir)
            COMMAND wb_check ${nn} --root ${PROJECT_SOURCE_DIR} --tests $<TARGET_FILE:${tests}>
                    --judge $<TARGET_FILE:lab${nn}_solution_tests> --submission ${case_dir}
                    --tape ${CMAKE_BINARY_DIR}/check-cases/lab${nn}_${name})
-  set_tests_properties(checkcase.lab${nn}.${name} PROPERTIES LABELS "lab${nn};checkcase;heavy" TIMEOUT 300
-                       PASS_REGULAR_EXPRESSION "${expects}")
+  # (an output folder of its own: cases of one lab may be judged at once, by the same test binary)
+  set_tests_properties(checkcase.lab${nn}.${name} PROPERTIES LABELS "lab${nn};checkcase" TIMEOUT 300
+                       PASS_REGULAR_EXPRESSION "${expects}"
+                       ENVIRONMENT WB_TEST_OUTPUT_DIR=${CMAKE_BINARY_DIR}/test-output/checkcase_lab${nn}_${name})
 endfunction()
 
 # check_NN: `check` where there is no ./workbook (a Windows laptop): `cmake --build build --target

@@ -57,7 +57,9 @@ bool isPie(const char* exe) {
 // The addr2line command for the frames among `frames` that are in this executable (not in a
 // shared library).
 std::string symbolizeCommand(void* const* frames, int n) {
-  std::string cmd = std::string("addr2line -C -f -e '") + g_exe + "'";
+  // (-i: each frame's inlined calls too, innermost first; a crash inlined from a header, std::sqrt in
+  // glm::normalize, is still found in the exercise that called it)
+  std::string cmd = std::string("addr2line -C -f -i -e '") + g_exe + "'";
   for (int k = 0; k < n; ++k) {
     Dl_info info{};
     if (!dladdr(frames[k], &info) || info.dli_fbase != g_base) continue;
