@@ -56,6 +56,15 @@ ProcessResult runProcess(const ProcessSpec& spec) {
   return process.wait();
 }
 
+bool Process::running() {
+  if (done_ || reap(false)) return false;
+  if (spec_.timeoutSeconds > 0 && steadySeconds() - started_ > spec_.timeoutSeconds) {
+    stop(ProcessResult::End::TimedOut);
+    return false;
+  }
+  return !stoppedAtWriteCap();
+}
+
 ProcessResult Process::wait() {
   while (running()) std::this_thread::sleep_for(std::chrono::milliseconds(20));
   return result_;
@@ -210,14 +219,7 @@ bool Process::reap(bool block) {
   return true;
 }
 
-bool Process::running() {
-  if (done_ || reap(false)) return false;
-  if (spec_.timeoutSeconds > 0 && steadySeconds() - started_ > spec_.timeoutSeconds) {
-    stop(ProcessResult::End::TimedOut);
-    return false;
-  }
-  return true;
-}
+bool Process::stoppedAtWriteCap() { return false; }  // (the kernel's cap: a SIGXFSZ, read by reap())
 
 void Process::stop(ProcessResult::End end, double graceSeconds) {
   if (done_) return;

@@ -20,7 +20,7 @@ struct ProcessSpec {
   std::filesystem::path log;                             ///< its stdout and stderr; empty: ours
   double timeoutSeconds = 0;                             ///< stopped past it; 0: no limit
   long long maxWriteBytes = 0;                           ///< stopped when a file it writes passes it; 0: none
-  bool newSession = false;  ///< POSIX: a session of its own (a supervisor's child), not only a group
+  bool newSession = false;    ///< POSIX: a session of its own (a supervisor's child), not only a group
   double graceSeconds = 1.0;  ///< POSIX: from SIGTERM at a bound to SIGKILL (time to say where it was)
 };
 
@@ -55,6 +55,7 @@ class Process {
 
  private:
   bool reap(bool block);
+  bool stoppedAtWriteCap();  // Windows: the log past maxWriteBytes stops it (POSIX: RLIMIT_FSIZE does)
   ProcessSpec spec_;
   ProcessResult result_;
   bool done_ = false;

@@ -140,19 +140,12 @@ bool Process::reap(bool block) {
   return true;
 }
 
-bool Process::running() {
-  if (done_ || reap(false)) return false;
-  if (spec_.timeoutSeconds > 0 && steadySeconds() - started_ > spec_.timeoutSeconds) {
-    stop(ProcessResult::End::TimedOut);
-    return false;
-  }
+bool Process::stoppedAtWriteCap() {
   std::error_code ec;
-  if (spec_.maxWriteBytes > 0 && !spec_.log.empty() && (long long)fs::file_size(spec_.log, ec) > spec_.maxWriteBytes &&
-      !ec) {
-    stop(ProcessResult::End::WroteTooMuch);
-    fs::resize_file(spec_.log, std::uintmax_t(spec_.maxWriteBytes), ec);  // (as POSIX's cap leaves it)
-    return false;
-  }
+  const auto size = fs::file_size(spec_.log, ec);
+  if (spec_.maxWriteBytes <= 0 || spec_.log.empty() || ec || (long long)size <= spec_.maxWriteBytes) return false;
+  stop(ProcessResult::End::WroteTooMuch);
+  fs::resize_file(spec_.log, std::uintmax_t(spec_.maxWriteBytes), ec);  // (as POSIX's cap leaves it)
   return true;
 }
 

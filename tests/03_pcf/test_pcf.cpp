@@ -6,6 +6,8 @@
 #include "common/platform/texture_io.hpp"
 #include "tests/harness/harness.hpp"
 
+#include <glm/gtc/constants.hpp>
+
 #include <cmath>
 
 using wb::test::GlTest;
@@ -152,7 +154,7 @@ TEST_F(GlTest, Ex03_4_PoissonRotatesTheDiskPerPixel) {
         "result.x = pcfPoisson(wb_tex0, IN(0).xyz, " + std::to_string(count) + ", 2.5, uvec2(IN(1).xy), IN(0).w);";
     WB_RUN_GLSL(got, "03.4", body, int(in.size()), 2, both, {map.texture.id()});
     for (size_t k = 0; k < in.size(); ++k) {
-      const double a = 2 * M_PI * hash[k].x, c = std::cos(a), s = std::sin(a);
+      const double a = 2 * glm::pi<double>() * hash[k].x, c = std::cos(a), s = std::sin(a);
       double sum = 0;
       for (int t = 0; t < count; ++t) {
         const double px = c * disk[t].x - s * disk[t].y, py = s * disk[t].x + c * disk[t].y;

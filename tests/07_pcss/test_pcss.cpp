@@ -7,6 +7,8 @@
 #include "tests/harness/harness.hpp"
 #include "tests/harness/picture.hpp"
 
+#include <glm/gtc/constants.hpp>
+
 #include <cmath>
 #include <functional>
 #include <iomanip>
@@ -218,8 +220,8 @@ TEST_F(GlTest, Ex07_4_PcssFollowsThePenumbraAcrossAnEdge) {
     WB_RUN_GLSL(got, "07.4", body, int(in.size()), 2, both, {map.texture.id()});
     for (size_t k = 0; k < in.size(); ++k) {
       int unsureSearch = 0, unsureFilter = 0;
-      const double want =
-          emulatePcss(map, taps, {in[k].x, in[k].y}, in[k].z, c, 2 * M_PI * hash[k].x, unsureSearch, unsureFilter);
+      const double want = emulatePcss(map, taps, {in[k].x, in[k].y}, in[k].z, c, 2 * glm::pi<double>() * hash[k].x,
+                                      unsureSearch, unsureFilter);
       // A search tap on an edge can move the blockers' mean, and so every filter tap, when there are
       // two distances: such a case proves nothing. Otherwise a tap of slack for each filter tap on an
       // edge (or for one search tap that decides whether there are blockers at all), and none elsewhere.

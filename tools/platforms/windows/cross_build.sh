@@ -93,7 +93,7 @@ for c in "${cases[@]}"; do  # (a C++ case has a build of its own; a GLSL case on
 done
 step "the workbook for Windows: ${#targets[@]} targets (every lab, its solution and both test binaries)"
 cmake -S "$ROOT" -B "$WORK/wb" "${TOOLCHAIN[@]}" -DWB_REGISTER_TESTS=OFF >"$WORK/wb-configure.log"
-nice cmake --build "$WORK/wb" --target "${targets[@]}" -j"$JOBS" >"$WORK/wb-build.log" 2>&1 ||
+nice cmake --build "$WORK/wb" --target "${targets[@]}" -j"$JOBS" -- -k >"$WORK/wb-build.log" 2>&1 ||
   { tail -30 "$WORK/wb-build.log"; exit 1; }
 echo "warnings in the Windows build: $(grep -c "warning:" "$WORK/wb-build.log")"
 step "the same for Linux (the pictures and verdicts to compare with)"
