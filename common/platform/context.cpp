@@ -153,8 +153,10 @@ class GlfwContext final : public Context {
     glfwWindowHint(GLFW_VISIBLE, hidden ? GLFW_FALSE : GLFW_TRUE);
     GLFWmonitor* monitor = o.fullscreen && !hidden ? glfwGetPrimaryMonitor() : nullptr;
     const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+    // (hidden: a small window, whatever the size asked, as headless draws into framebuffer objects; the
+    // tests ask for 0 x 0, which GLFW refuses)
     window_ = mode ? glfwCreateWindow(mode->width, mode->height, o.title.c_str(), monitor, nullptr)
-                   : glfwCreateWindow(o.width, o.height, o.title.c_str(), nullptr, nullptr);
+                   : glfwCreateWindow(hidden ? 64 : o.width, hidden ? 64 : o.height, o.title.c_str(), nullptr, nullptr);
     if (!window_) {
       glfwTerminate();
       throw ContextError(

@@ -61,8 +61,10 @@ class Process {
   bool done_ = false;
   double started_ = 0;
   long long pid_ = -1;
-  void* job_ = nullptr;      // Windows: the job object
-  void* process_ = nullptr;  // Windows: the process handle
+#if defined(_WIN32)
+  void* job_ = nullptr;      // the job object
+  void* process_ = nullptr;  // the process handle
+#endif
 };
 
 /// Runs `spec` to its end (or its bounds).
