@@ -102,6 +102,10 @@ Process::Process(const ProcessSpec& spec) : spec_(spec), started_(steadySeconds(
     si.dwFlags = STARTF_USESTDHANDLES;
     si.hStdInput = GetStdHandle(STD_INPUT_HANDLE), si.hStdOutput = log, si.hStdError = log;
   }
+  // A crash ends the child at once, with its exception as the exit code: no error dialog (Windows
+  // Error Reporting; Wine starts its debugger) waiting for a click until the time limit. Children
+  // inherit the mode, so the lab runs a test starts end the same way.
+  SetErrorMode(GetErrorMode() | SEM_FAILCRITICALERRORS | SEM_NOGPFAULTERRORBOX);
   job_ = CreateJobObjectW(nullptr, nullptr);
   JOBOBJECT_EXTENDED_LIMIT_INFORMATION limits{};
   limits.BasicLimitInformation.LimitFlags = JOB_OBJECT_LIMIT_KILL_ON_JOB_CLOSE;  // (we gone, it goes too)

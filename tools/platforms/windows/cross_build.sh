@@ -7,6 +7,7 @@
 # every exercise's verdict with Linux's wb_check on the same case.
 #   tools/platforms/windows/cross_build.sh [WORK]      (WORK: default build-windows/; the first time,
 #                                             about 10 minutes of dependencies, most of it Embree)
+#   WB_CROSS_CHECK_ONLY=1 ...: after a full run, rebuild wb_check alone and run the check cases again
 # The dependencies come from Debian's source packages (apt-get source: a deb-src line is added):
 # GLFW 3.3.8, Dear ImGui 1.86, GoogleTest 1.12.1 and Embree 3.13.5 (SSE2, triangles, internal
 # tasking; three CMake-only fixes for MinGW in embree-3.13.5-mingw.patch), built static.
@@ -91,6 +92,9 @@ for c in "${cases[@]}"; do  # (a C++ case has a build of its own; a GLSL case on
     grep -q "^file: exercise.cpp" "$ROOT"/tests/check_cases/"${c%%:*}"_*/"${c#*:}.case" &&
     targets+=("lab${c%%:*}_mutant_${c#*:}_tests") linux_targets+=("lab${c%%:*}_mutant_${c#*:}_tests")
 done
+if [ "${WB_CROSS_CHECK_ONLY:-0}" = 1 ]; then  # (the builds as they are, and wb_check anew: the check cases only)
+  targets=(wb_check) linux_targets=(wb_check)
+fi
 step "the workbook for Windows: ${#targets[@]} targets (every lab, its solution and both test binaries)"
 cmake -S "$ROOT" -B "$WORK/wb" "${TOOLCHAIN[@]}" -DWB_REGISTER_TESTS=OFF >"$WORK/wb-configure.log"
 nice cmake --build "$WORK/wb" --target "${targets[@]}" -j"$JOBS" -- -k >"$WORK/wb-build.log" 2>&1 ||
@@ -107,7 +111,8 @@ export WINEPREFIX=$WORK/wineprefix WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,msht
 export MESA_GL_VERSION_OVERRIDE=4.1 MESA_GLSL_VERSION_OVERRIDE=410
 status=0
 step "every solution under Wine, headless (a hidden GLFW window), 480x270, against the Linux render"
-for lab in "${labs[@]}"; do
+[ "${WB_CROSS_CHECK_ONLY:-0}" = 1 ] && labs_drawn=() || labs_drawn=("${labs[@]}")
+for lab in "${labs_drawn[@]}"; do
   nn=${lab:0:2} png=$WORK/pictures/lab$nn
   mkdir -p "$WORK/pictures" && rm -f "$png"-*.png
   args=(--headless --size 480x270 --frames 3)
@@ -127,6 +132,9 @@ for lab in "${labs[@]}"; do
 done
 
 step "check under Wine (wb_check.exe) and on Linux, on every check case of labs ${case_labs[*]}"
+# (the same limits on both sides, wider than a laptop's 8 s: under Wine each lab run starts a Wine
+# process and a GL context, seconds that Windows itself does not spend)
+export WB_CHECK_TIMEOUT=30
 verdicts() { sed -n 's/^  \([0-9][0-9]\.[0-9x]*\)  \(passes its tests\|passes own tests\|not implemented\|wrong\|error\) .*/\1 \2/p' "$1"; }
 for c in "${cases[@]}"; do
   nn=${c%%:*} name=${c#*:} lab=""
