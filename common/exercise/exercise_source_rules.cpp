@@ -35,6 +35,8 @@ class ExerciseSourceRules : public SourceRules {
   }
 
   bool remembers(const std::string& text) const override { return text.find("// EXERCISE ") != std::string::npos; }
+  // (exercise.glsl and exercise_layered.geom: the files students write)
+  bool guardsLoops(const fs::path& file) const override { return file.filename().string().rfind("exercise", 0) == 0; }
 
   std::vector<Fallback> fallbacks(const Substitutes& good, const Substitutes& now) const override {
     auto textNow = [&](const fs::path& f) {

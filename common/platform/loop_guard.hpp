@@ -4,7 +4,9 @@
 /// its exercise code's loops. Mesa 22's llvmpipe stopped a loop there by itself; Mesa 25's does not,
 /// and a GPU hangs (a laptop's whole display with it). So a loop that never ends gives a wrong
 /// picture or value everywhere, which the tests can name, not a hang. Lines and files are kept, so a
-/// compile error still names the student's line.
+/// compile error still names the student's line. Which files are guarded is the exercise floor's
+/// decision (SourceRules::guardsLoops, exercise/exercise_source_rules.cpp): the shader loader only
+/// applies it.
 #pragma once
 
 #include <string>

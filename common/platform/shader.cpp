@@ -62,8 +62,8 @@ fs::path includeTarget(const std::string& name, const fs::path& origin, int line
 void expand(const std::string& rawText, const fs::path& origin, const std::string& defines, const Reading& r,
             ShaderSource& src, std::ostringstream& out, int depth) {
   if (depth > 16) throw Error(origin.string() + ": #include nested too deeply (a cycle?)");
-  // An exercise's file (the student's GLSL) has every loop bounded, line for line (loop_guard.hpp).
-  const bool exercise = origin.filename().string().rfind("exercise", 0) == 0;
+  // A file the rules guard (a student's GLSL) has every loop bounded, line for line (loop_guard.hpp).
+  const bool exercise = r.rules && r.rules->guardsLoops(origin);
   const std::string text = exercise ? guardLoops(withoutBomAndCr(rawText)) : withoutBomAndCr(rawText);
   const int index = static_cast<int>(src.files.size());
   src.files.push_back(origin);

@@ -55,6 +55,8 @@ class SourceRules {
                                                               const std::filesystem::path& origin, int line) const = 0;
   /// True when a file read at a good build should be remembered for fallbacks().
   virtual bool remembers(const std::string& text) const = 0;
+  /// True when every loop of `file` is to be bounded (loop_guard.hpp): a student's.
+  virtual bool guardsLoops(const std::filesystem::path& /*file*/) const { return false; }
   /// One way to build after an edit stopped compiling: texts to read instead of the files' own, and
   /// what the panel says is drawn then.
   struct Fallback {
