@@ -20,6 +20,7 @@ class ImGuiLayer {
   ImGuiLayer& operator=(const ImGuiLayer&) = delete;
   /// Text 16 px times `scale` tall, and the paddings and widgets scaled with it.
   void setScale(float scale);
+  /// The scale last set (text 16 px times it tall, in ImGui's units).
   float scale() const { return scale_; }
 
  private:

@@ -22,8 +22,8 @@ constexpr int kLoopGuardSteps = 50000;
 /// line for line.
 std::string guardLoops(const std::string& text);
 
-/// The definition of wb_loop() and its counter, once per shader (#ifndef), for the text before the
-/// guarded file's first line.
+/// The definition of wb_loop() and its counter, once per shader (an include guard), for the text
+/// before the guarded file's first line.
 std::string loopGuardPrelude();
 
 }  // namespace wb

@@ -27,10 +27,11 @@ struct ProcessSpec {
 /// How a run ended. `code` is a shell's exit status: the program's own, 124 past the time limit,
 /// 128 + the signal of a crash (Windows' exceptions mapped to the nearest signal).
 struct ProcessResult {
+  /// Why it ended: on its own, a crash, its time limit, its cap on writing, or it never started.
   enum class End { Exited, Crashed, TimedOut, WroteTooMuch, NotStarted };
-  End end = End::NotStarted;
-  int code = 127;
-  std::string detail;  ///< a crash's signal or exception, or why it did not start
+  End end = End::NotStarted;  ///< why it ended
+  int code = 127;             ///< the shell's exit status (see above)
+  std::string detail;         ///< a crash's signal or exception, or why it did not start
 };
 
 /// A running child with every process it starts; stopped and reaped when destroyed.
@@ -49,6 +50,7 @@ class Process {
   /// SIGKILL after `graceSeconds`, the spec's when negative; Windows: the whole job at once). `end`
   /// says why.
   void stop(ProcessResult::End end, double graceSeconds = -1);
+  /// How it ended (End::NotStarted while it runs).
   const ProcessResult& result() const { return result_; }
   /// Its process id (POSIX: also its group's, or session's), or -1 when it did not start.
   long long id() const { return pid_; }
