@@ -83,7 +83,13 @@ function(_wb_register_tests lab nn variant target ids)
     string(REPLACE "." ";" parts ${id})
     list(GET parts 1 k)
     set(props TIMEOUT 120)
-    if(variant STREQUAL "student" AND WB_EXPECT_STUBS AND EXISTS ${PROJECT_SOURCE_DIR}/solutions)
+    if(k MATCHES "^H" AND variant STREQUAL "student" AND WB_EXPECT_STUBS AND EXISTS ${PROJECT_SOURCE_DIR}/solutions)
+      # A hunt is handed out as working code with its bug in place: its tests must find it WRONG.
+      list(APPEND props PASS_REGULAR_EXPRESSION "WRONG" FAIL_REGULAR_EXPRESSION "NOT IMPLEMENTED|ERROR")
+    elseif(k MATCHES "^H" AND variant STREQUAL "student" AND WB_EXPECT_STUBS)
+      # The student edition: a hunt is still buggy (WRONG) or fixed (its test passes), never an error.
+      list(APPEND props PASS_REGULAR_EXPRESSION "WRONG|  PASSED  . 1 test" FAIL_REGULAR_EXPRESSION "ERROR")
+    elseif(variant STREQUAL "student" AND WB_EXPECT_STUBS AND EXISTS ${PROJECT_SOURCE_DIR}/solutions)
       list(APPEND props PASS_REGULAR_EXPRESSION "NOT IMPLEMENTED")  # the repo's stubs, as handed out
     elseif(variant STREQUAL "student" AND WB_EXPECT_STUBS)
       # The student edition: an exercise is still to do (NOT IMPLEMENTED) or done (its test passes),

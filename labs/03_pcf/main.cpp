@@ -37,6 +37,7 @@ class PcfLab : public wb::Lab {
                  "gaussianWeight(vec2(1.0), 1.0) + pcfGaussian(wb_tex0, vec3(0.5), 1, 1.0, 1.0, 0.0)");
     glslExercise("03.4", "exercise.glsl", "pcfPoisson(wb_tex0, vec3(0.5), 16, 1.0, uvec2(0u), 0.0)");
     glslExercise("03.5", "exercise.glsl", "pcfGather(wb_tex0, vec3(0.5), 1, 0.0)");
+    glslExercise("03.H1", "exercise.glsl", "insideShadowMap(vec3(0.5)) ? 1.0 : 0.0");  // a bug hunt: never a stub
     // The hardware filter reads the same depth texture through a sampler that compares.
     compareSampler = wb::makeComparisonSampler();
   }

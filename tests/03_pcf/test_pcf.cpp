@@ -5,6 +5,7 @@
 #include "common/platform/gl.hpp"
 #include "common/platform/texture_io.hpp"
 #include "tests/harness/harness.hpp"
+#include "tests/harness/hunt.hpp"
 
 #include <glm/gtc/constants.hpp>
 
@@ -221,4 +222,23 @@ TEST(Lab03, Ex03_4_ScenePoisson) {
 TEST(Lab03, Ex03_5_SceneGatherMatchesGrid) {
   wb::test::expectSceneMatchesGolden("03.5", "grid_5x5", wb::test::labArgs({"pcf.method=gather", "pcf.kernel=5"}), kTol,
                                      kMaxFraction);
+}
+
+// --- Bug hunt 03.H1: "dark ground under the short lamp" -------------------------------------------
+// The lamp of scenes/pcf_short_lamp.json ends 15 units away, inside the ground it lights: beyond its far
+// plane the map holds no depth, and nothing there is in shadow (the exact answer, by rays, says so).
+// Judged against that exact answer, not against a line of code: any fix that removes the dark band
+// and keeps every true shadow passes; hiding shadows, a margin or a bias does not.
+std::vector<std::string> shortLamp() {
+  return wb::test::labArgs({"pcf.method=grid", "pcf.kernel=3"}, "pcf_short_lamp.json");
+}
+
+// The reference measures 0.04% acne and 2.15% leak (./workbook run 03 --headless --size 480x270
+// --scene scenes/pcf_short_lamp.json --set pcf.kernel=3 --metrics); as handed out, 4.47% acne.
+TEST(Lab03, Ex03_H1_MeasuredNoShadowBeyondTheLampsReach) {
+  wb::test::expectSymptomGone("03.H1", "hunt_short_lamp", shortLamp(), {1.0, 10.0});
+}
+
+TEST(Lab03, Ex03_H1_SceneShortLamp) {
+  wb::test::expectSceneMatchesGolden("03.H1", "hunt_short_lamp", shortLamp(), kTol, kMaxFraction);
 }

@@ -16,7 +16,7 @@ for mutant in 10_cascades/fraction_integer_division:10.1 09_shadow_volumes/corne
     "$build/lab${nn}_mutant_${name}_tests" --runner "$tape" >"$tape/runner.log" 2>&1 || true
   WB_SUBMISSION_DIR="$build/mutants/$lab/$name" \
     "$build/lab${nn}_solution_tests" --judge "$tape" --check >"$tape/judge.log" 2>&1 || true
-  wrong=$(awk '$1 ~ /^[0-9][0-9]\.[0-9x]$/ && $2 == "wrong" { print $1 }' "$tape/judge.log" | tr '\n' ' ')
+  wrong=$(awk '$1 ~ /^[0-9][0-9]\.([0-9x]|H[0-9])$/ && $2 == "wrong" { print $1 }' "$tape/judge.log" | tr '\n' ' ')
   if [ "$wrong" = "$id " ]; then
     echo "ok: $lab/$name: check marks $id alone"
   else

@@ -13,8 +13,8 @@ for mutant in 09_shadow_volumes/w_ignored:09.2 10_cascades/interval_off_by_one:1
   out="$build/test-output/student-edition-attribution/$nn-$name" && rm -rf "$out" && mkdir -p "$out"
   WB_TEST_OUTPUT_DIR="$out" WB_SUBMISSION_DIR="$build/mutants/$lab/$name" \
     "$build/lab${nn}_solution_tests" --as-student-edition --check >"$out/check.log" 2>&1 || true
-  wrong=$(awk '$1 ~ /^[0-9][0-9]\.[0-9x]$/ && $2 == "wrong" { print $1 }' "$out/check.log" | tr '\n' ' ')
-  errors=$(awk '$1 ~ /^[0-9][0-9]\.[0-9x]$/ && $2 == "error" { print $1 }' "$out/check.log" | tr '\n' ' ')
+  wrong=$(awk '$1 ~ /^[0-9][0-9]\.([0-9x]|H[0-9])$/ && $2 == "wrong" { print $1 }' "$out/check.log" | tr '\n' ' ')
+  errors=$(awk '$1 ~ /^[0-9][0-9]\.([0-9x]|H[0-9])$/ && $2 == "error" { print $1 }' "$out/check.log" | tr '\n' ' ')
   waiting=$(grep -c "its scene is checked once $id passes" "$out/check.log" || true)
   # Every other exercise is the solution's: the summary must count all of them, as the grader does.
   summary=$(grep -o "[0-9]* of [0-9]* exercises pass their tests" "$out/check.log" || true)

@@ -165,7 +165,7 @@ int runJudge(const std::string& nn, const fs::path& judge, const fs::path& tape,
       return 124;
     }
     std::smatch m;
-    const bool named = std::regex_search(test, m, std::regex("^[^.]*\\.Ex([0-9][0-9])_([0-9x]*)_"));
+    const bool named = std::regex_search(test, m, std::regex("^[^.]*\\.Ex([0-9][0-9])_([0-9xH]*)_"));
     const std::string id = named ? m[1].str() + "." + m[2].str() : "";
     std::fprintf(stderr,
                  "workbook: judging lab %s: the test %s%s ran past %s s and was stopped; judging the rest without it "

@@ -177,6 +177,9 @@ def main():
     ap.add_argument("--batch", action="store_true", help="grade every folder or archive inside SUBMISSION")
     ap.add_argument("--out", help="where the results go (default: grades/<name>)")
     ap.add_argument("--labs", help="only these labs, e.g. 01,02")
+    ap.add_argument("--exercises", choices=["all", "builds", "hunts"], default="all",
+                    help="grade every exercise (default), only those written into stubs, or only the bug hunts "
+                         "(NN.Hk): hunts as an assignment of their own")
     # One at a time by default: one grading tree already builds and tests with every core. Measured on 2
     # cores (4 submissions of lab 01, docs/instructors.md): --jobs 2 took as long as --jobs 1 once its
     # second tree was built (34 s against 35 s), and 104 s the first time, when it builds that tree.
@@ -197,7 +200,7 @@ def main():
     args = ap.parse_args()
     deadline = time.time() + args.time_limit if args.time_limit else None
     only = [x.strip().zfill(2) for x in args.labs.split(",")] if args.labs else None
-    labs = load_labs(only)
+    labs = load_labs(only, args.exercises)
     sandbox = Sandbox()
     if args.prepare_only:
         secs = Workspace(0, labs, ROOT / "build-grade", args.judge_build).prepare(available_cpus(), sandbox)

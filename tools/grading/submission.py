@@ -11,8 +11,15 @@ from pathlib import Path
 from .common import MAX_FILE_BYTES, ROOT
 
 
-def load_labs(only=None):
-    """Every lab with its exercises (id, title, file, points, extension) and its held-out tests."""
+def is_hunt(exercise):
+    """A bug hunt ("kind": "hunt", id NN.Hk): working code with a real bug, graded like any exercise."""
+    return exercise.get("kind") == "hunt"
+
+
+def load_labs(only=None, kinds="all"):
+    """Every lab with its exercises (id, title, file, points, extension, kind) and its held-out tests.
+    kinds: "all", "builds" (the exercises written into stubs) or "hunts" (the bug hunts alone), so that
+    hunts can be an assignment of their own."""
     labs = []
     for manifest in sorted((ROOT / "labs").glob("*/exercises.json")):
         data = json.loads(manifest.read_text())
@@ -21,11 +28,15 @@ def load_labs(only=None):
             continue
         hidden_file = ROOT / "tests/hidden" / lab / "hidden.json"
         hidden = json.loads(hidden_file.read_text()) if hidden_file.exists() else {"points": {}}
-        labs.append({"name": lab, "nn": lab[:2], "title": data.get("title", lab), "exercises": data["exercises"],
+        exercises = [e for e in data["exercises"] if kinds == "all" or is_hunt(e) == (kinds == "hunts")]
+        if not exercises:
+            continue
+        labs.append({"name": lab, "nn": lab[:2], "title": data.get("title", lab), "exercises": exercises,
                      "hidden_points": hidden.get("points", {}),
                      "hidden_visibility": hidden.get("visibility", "after_due_date")})
     if not labs:
-        raise SystemExit("grade: no labs found" + (f" for --labs {','.join(only)}" if only else ""))
+        raise SystemExit("grade: no labs found" + (f" for --labs {','.join(only)}" if only else "") +
+                         (f" with --exercises {kinds}" if kinds != "all" else ""))
     return labs
 
 

@@ -49,3 +49,13 @@ float pcfGather(sampler2D map, vec3 coord, int radius, float bias) {
   // (x: (i, j+1), y: (i+1, j+1), z: (i+1, j), w: (i, j)). With an odd N, the last row and column of
   // gathers reach one texel too far: leave those out.
 }
+
+// EXERCISE 03.H1: bug hunt, "dark ground under the short lamp" (README.md, Bug hunt 03.H1).
+// Not a stub: this is the lab's working code, and it has a bug that shipped in real engines. Find it
+// from the symptom; the handout says how to see it and how it is measured.
+// True when the shadow map holds an answer for the point at shadow coordinate `coord` (the map's
+// uv and the depth the light's projection gives it); the scene pass counts any other point as lit.
+bool insideShadowMap(vec3 coord) {
+  bvec2 low = greaterThanEqual(coord.xy, vec2(0.0)), high = lessThanEqual(coord.xy, vec2(1.0));
+  return all(low) && all(high);
+}

@@ -40,6 +40,8 @@ void main() {
 #else
   float visibility = pcfGrid(u_shadowMap, coord, u_radius, u_spacing, u_bias);
 #endif
+  // Beyond the map (its uv square, or past the light's near and far planes) nothing is known: lit.
+  if (!wbIsTodo(visibility) && !insideShadowMap(coord)) visibility = 1.0;
   if (wbIsTodo(visibility)) {  // the chosen filter is a stub: show it, never fake a shadow
     wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
     return;

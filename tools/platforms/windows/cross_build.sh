@@ -135,7 +135,7 @@ step "check under Wine (wb_check.exe) and on Linux, on every check case of labs 
 # (the same limits on both sides, wider than a laptop's 8 s: under Wine each lab run starts a Wine
 # process and a GL context, seconds that Windows itself does not spend)
 export WB_CHECK_TIMEOUT=30
-verdicts() { sed -n 's/^  \([0-9][0-9]\.[0-9x]*\)  \(passes its tests\|passes own tests\|not implemented\|wrong\|error\) .*/\1 \2/p' "$1"; }
+verdicts() { sed -n 's/^  \([0-9][0-9]\.[0-9xH]*\)  \(passes its tests\|passes own tests\|not implemented\|wrong\|error\) .*/\1 \2/p' "$1"; }
 for c in "${cases[@]}"; do
   nn=${c%%:*} name=${c#*:} lab=""
   for l in "${labs[@]}"; do [ "${l:0:2}" = "$nn" ] && lab=$l; done
