@@ -45,6 +45,7 @@ class VolumeLab : public wb::Lab {
                  "facesLight(vec3(0.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec4(0.0, 0.0, 1.0, 0.0)) + "
                  "silhouetteEdge(vec3(0.0), vec3(1.0, 0.0, 0.0), vec3(0.0, -1.0, 0.0), vec4(0.0, 0.0, 1.0, 0.0))");
     glslExercise("09.3", "exercise.glsl", "extrudeToInfinity(vec3(1.0), vec4(0.0, 2.0, 0.0, 1.0)).x");
+    glslExercise("09.H1", "exercise.glsl", "nearCapVertex(mat4(1.0), vec3(0.0)).x");  // a bug hunt: never a stub
     int leafy = 0;  // alpha-tested objects: their triangles' outline is not their leaves'
     for (const auto& o : scene.objects) leafy += !o.castsVolume && !o.material.texture.empty();
     if (leafy)

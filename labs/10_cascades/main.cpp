@@ -72,6 +72,7 @@ class CascadeLab : public wb::Lab {
                  "cascadeByInterval(1.0, vec4(2.0), 4) < 0 || cascadeByMap(vec3(0.0), mat4[4](mat4(1.0), mat4(1.0), "
                  "mat4(1.0), mat4(1.0)), 4) < 0 ? WB_TODO : 0.0");
     glslExercise("10.6", "exercise.glsl", "blendWeight(1.0, 0.0, 2.0, 0.1)");
+    glslExercise("10.H1", "exercise.glsl", "0.0");  // a bug hunt: working code, never a stub
     attempt("10.1", [] { lab10::splitDistances(1, 10, 2, lab10::SplitScheme::Uniform, 0); });
   }
 

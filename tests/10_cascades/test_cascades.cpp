@@ -1,9 +1,12 @@
 // Lab 10 tests. Layer 1: the split formulas against values worked out by hand (lambda 0, 0.5 and 1),
 // slice corners of known frusta, the crop matrix mapping the corners onto [-1, 1], texel snapping,
 // selection at the split boundaries and blend weights at the band's edges.
+#include "common/platform/gl.hpp"
 #include "common/platform/image.hpp"
+#include "common/platform/texture_io.hpp"
 #include "exercise.hpp"
 #include "tests/harness/harness.hpp"
+#include "tests/harness/hunt.hpp"
 #include "tests/harness/picture.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -339,4 +342,63 @@ TEST(Lab10, Ex10_1_MeasuredTexelDensityEvenestWhenLogarithmic) {
                                     << logarithmic << ") than with practical ones (" << practical << ")";
   EXPECT_LT(practical, uniform) << "WRONG: texels per pixel vary more with practical splits (p95 / p5 = " << practical
                                 << ") than with uniform ones (" << uniform << ")";
+}
+
+// --- Bug hunt 10.H1: "soft shadows grow blurrier at every split" ---------------------------------------
+// Three cascades of one 64-texel map, cascade k's texel 2^k world units wide (uvPerWorld = 1 / (64 2^k)),
+// each holding the same edge: a caster (depth 0.2) left of the map's centre, nothing (1) right of it; a
+// receiver at depth 0.5. PCF 7 x 7 taps spaced by 1 world unit, nearest texels: at each distance from
+// the edge the lit share of the taps, emulated here tap by tap, is what cascade k must give. The
+// shadow's ramp is 7 world units wide in every cascade (3.5 texels in cascade 1, 1.75 in cascade 2).
+TEST_F(GlTest, Ex10_H1_TheRampIsAsWideInEveryCascade) {
+  constexpr int kSize = 64, kCascades = 3, kKernel = 7;
+  std::vector<float> depth(size_t(kSize * kSize * kCascades));
+  for (size_t k = 0; k < depth.size(); ++k) depth[k] = int(k % kSize) < kSize / 2 ? 0.2f : 1.0f;
+  wb::Texture maps = wb::makeTexture(GL_TEXTURE_2D_ARRAY);
+  {
+    wb::BoundTexture edit(GL_TEXTURE_2D_ARRAY, maps.id());
+    wb::allocateTexture(GL_TEXTURE_2D_ARRAY, 1, GL_DEPTH_COMPONENT32F, kSize, kSize, kCascades);
+  }
+  wb::uploadTextureLayers(maps.id(), kSize, kSize, kCascades, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  for (auto [name, value] : {std::pair{GL_TEXTURE_MIN_FILTER, GL_NEAREST},
+                             {GL_TEXTURE_MAG_FILTER, GL_NEAREST},
+                             {GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE},
+                             {GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL},
+                             {GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE},
+                             {GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE}})
+    wb::setTextureParameter(maps.id(), GLenum(name), GLint(value));
+  std::vector<glm::vec4> in;  // (world distance from the edge, cascade)
+  for (int c = 0; c < kCascades; ++c)
+    for (float d : {-4.7f, -2.3f, -0.6f, 0.7f, 2.4f, 4.6f}) in.push_back({d, float(c), 0, 0});
+  std::vector<glm::vec4> got;
+  WB_RUN_GLSL(got, "10.H1",
+              "int c = int(IN(0).y); vec2 uvPerWorld[4] = vec2[4](vec2(1.0 / 64.0), vec2(1.0 / 128.0), "
+              "vec2(1.0 / 256.0), vec2(1.0 / 512.0));"
+              "vec3 p = vec3(0.5 + IN(0).x * uvPerWorld[c].x, 0.5, 0.5);"
+              "result.x = cascadePcf(wb_tex0, p, c, 0.0, 7, 1.0, uvPerWorld);",
+              int(in.size()), 1, in, {maps.id()});
+  for (size_t k = 0; k < in.size(); ++k) {
+    const double d = std::round(in[k].x * 10) / 10, texelWorld = std::pow(2.0, double(in[k].y));
+    int lit = 0;
+    for (int i = -kKernel / 2; i <= kKernel / 2; ++i)  // a tap's texel: lit right of the centre
+      lit += std::floor((d + i) / texelWorld) >= 0 ? kKernel : 0;
+    const double want = lit / double(kKernel * kKernel);
+    EXPECT_NEAR(got[k].x, want, 1e-5) << "WRONG: in cascade " << int(in[k].y) << " (texels " << texelWorld
+                                      << " world units wide), " << d << " world units from a shadow's edge, PCF "
+                                      << "7 x 7 taps 1 world unit apart";
+  }
+}
+
+// --- Bug hunt 10.H1: "soft shadows grow blurrier at every split" ---------------------------------------
+// csm.kernel=7 spaces the taps by cascade 0's texel in world units in every cascade, so a shadow is as
+// soft far away as near. Measured in cascade 2 (./workbook run 10 --headless --size 480x270 --set
+// csm.kernel=7 --set measure.region=c2 --metrics): the reference leaks 26.7% (its 7x7 ramps, against
+// the exact hard shadow), the bug 47.3% (taps 10x too far apart: far shadows smeared).
+TEST(Lab10, Ex10_H1_MeasuredFarShadowsAsSoftAsNearOnes) {
+  wb::test::expectSymptomGone("10.H1", "hunt_kernel7_c2", wb::test::labArgs({"csm.kernel=7", "measure.region=c2"}),
+                              {1.5, 35.0});
+}
+TEST(Lab10, Ex10_H1_SceneKernel7OverTheSplits) {
+  wb::test::expectSceneMatchesGolden("10.H1", "hunt_kernel7_splits",
+                                     wb::test::labArgs({"csm.kernel=7", "camera.bookmark=3"}), kTol, kMaxFraction);
 }

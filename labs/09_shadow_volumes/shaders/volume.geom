@@ -30,20 +30,12 @@ void main() {
   if (silhouetteEdge(v1, v2, v_world[3], u_light) > 0.5) side(v1, v2);
   if (silhouetteEdge(v2, v0, v_world[5], u_light) > 0.5) side(v2, v0);
   if (u_caps == 0) return;
-  // The near cap is the triangle itself; the far cap is the triangle at infinity, turned round.
-  // The near cap lies on the caster's lit face and must fail the depth test there, so that z-fail
-  // counts it and the face comes out lit. Drawn through another stage than the scene, it would
-  // round to a unit of depth either way, pixel by pixel (speckles of shadow on lit casters): it is
-  // pushed back by 4 units of the 24-bit depth buffer (2^-24 each, 2^-23 in NDC), and fails everywhere.
-  const float capPush = 4.0 * exp2(-23.0);
-  gl_Position = u_viewProj * vec4(v0, 1.0);
-  gl_Position.z += capPush * gl_Position.w;
+  // The near cap is the triangle itself (09.H1); the far cap is the triangle at infinity, turned round.
+  gl_Position = nearCapVertex(u_viewProj, v0);
   EmitVertex();
-  gl_Position = u_viewProj * vec4(v1, 1.0);
-  gl_Position.z += capPush * gl_Position.w;
+  gl_Position = nearCapVertex(u_viewProj, v1);
   EmitVertex();
-  gl_Position = u_viewProj * vec4(v2, 1.0);
-  gl_Position.z += capPush * gl_Position.w;
+  gl_Position = nearCapVertex(u_viewProj, v2);
   EmitVertex();
   EndPrimitive();
   gl_Position = u_viewProj * extrudeToInfinity(v0, u_light);

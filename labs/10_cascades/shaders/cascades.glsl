@@ -57,13 +57,7 @@ float lookup(int i) {
 // or 1 outside its map.
 float lookup(int i) {
   if (!inMap(i)) return 1.0;
-  vec3 p = v_light[i] * 0.5 + 0.5;
-  vec2 step = u_tapWorld * u_uvPerWorld[i];  // the same world spacing in every cascade
-  float lit = 0.0;
-  int r = u_kernel / 2;
-  for (int y = -r; y <= r; ++y)
-    for (int x = -r; x <= r; ++x) lit += texture(u_compare, vec4(p.xy + vec2(x, y) * step, float(i), p.z - u_bias));
-  return lit / float(u_kernel * u_kernel);
+  return cascadePcf(u_compare, v_light[i] * 0.5 + 0.5, i, u_bias, u_kernel, u_tapWorld, u_uvPerWorld);
 }
 #endif
 
