@@ -36,6 +36,7 @@ class EsmLab : public wb::Lab {
     glslExercise("04.2", "exercise.glsl", "logAdd(0.0, 0.0)");
     glslExercise("04.3", "exercise.glsl", "esmVisibility(0.0, 0.5, 1.0)");
     glslExercise("04.5", "exercise.glsl", "esmNeedsFallback(0.0, 0.5, 1.0, 0.1)");
+    glslExercise("04.H1", "exercise.glsl", "0.0");  // a bug hunt: working code, never a stub
   }
 
   void render() override {
