@@ -29,4 +29,14 @@ void cullForDepthPass([[maybe_unused]] bool enabled) {
   // Hints: glEnable(GL_CULL_FACE), glCullFace(...). Which faces look at the light?
 }
 
+// EXERCISE 02.H1: bug hunt, "the awning casts no shadow" (README.md, Bug hunt 02.H1).
+// Not a stub: this is the lab's working code, and it has a bug that shipped in a real sample. Find it
+// from the symptom; the handout says how to see it and how it is measured.
+// The depth pass's face culling for every method but front_faces (02.4 sets its own).
+void depthPassCulling() {
+  // The same as the camera pass: the faces turned away cannot be seen, so skip them.
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+}
+
 }  // namespace lab02

@@ -19,4 +19,8 @@ double d3dDepthBias(int depthBias, double slopeScaledDepthBias, double depthBias
 /// stores the back faces; when not, turn culling off.
 void cullForDepthPass(bool enabled);
 
+/// EXERCISE 02.H1 (a bug hunt: working code with a real bug in it; README.md): the depth pass's face
+/// culling for every method but front_faces.
+void depthPassCulling();
+
 }  // namespace lab02

@@ -1,7 +1,7 @@
 // Lab 02: Bias, acne and peter-panning
 // ---------------------------------------------------------------------------------------------
 // Difficulty: 2/5. Handout: README.md beside this file.
-// Exercises:  02.3, 02.4 in exercise.cpp; 02.1, 02.2, 02.5, 02.6 in shaders/exercise.glsl.
+// Exercises:  02.3, 02.4 and the bug hunt 02.H1 in exercise.cpp; 02.1, 02.2, 02.5, 02.6 in shaders/exercise.glsl.
 // Controls:   drag to orbit, wheel to zoom, 1-9 camera bookmarks, F12 screenshot; "Measure" in the
 //             info panel compares the frame with exact (ray-cast) visibility.
 // Every remedy for shadow acne trades it for something else. This lab puts six of them on one scene
@@ -59,13 +59,16 @@ class BiasLab : public wb::Lab {
     const glm::mat4 lightViewProj = wb::lightViewProj(light, scene);
     shadowMap.resize(shadowMapSize());
 
-    // PASS 1: depth from the light, with the depth-pass remedies (02.3, 02.4) when chosen.
+    // PASS 1: depth from the light, with the depth-pass remedies (02.3, 02.4) when chosen, culled as 02.H1 says.
     bool ready = true;
     {
       auto timer = timePass("shadow");
       if (method == PolygonOffset)
         ready = attemptRasterState("02.3", [&] { lab02::applyRasterizerBias(offsetFactor, offsetUnits); });
-      if (method == FrontFaces) ready = attemptRasterState("02.4", [&] { lab02::cullForDepthPass(true); });
+      if (method == FrontFaces)
+        ready = attemptRasterState("02.4", [&] { lab02::cullForDepthPass(true); });
+      else
+        ready = attemptRasterState("02.H1", [] { lab02::depthPassCulling(); }) && ready;
       renderShadowMap(*depthProgram, shadowMap, light, lightViewProj);
       glDisable(GL_POLYGON_OFFSET_FILL);  // back to the state every other pass expects
       glDisable(GL_CULL_FACE);

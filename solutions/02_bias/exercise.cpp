@@ -34,4 +34,10 @@ void cullForDepthPass(bool enabled) {
   glCullFace(GL_FRONT);  // the faces turned to the light; the map keeps the back faces
 }
 
+// EXERCISE 02.H1: bug hunt, "the awning casts no shadow" (README.md, Bug hunt 02.H1).
+// The depth pass's face culling for every method but front_faces (02.4 sets its own).
+void depthPassCulling() {
+  glDisable(GL_CULL_FACE);  // none: a single-sided (open) mesh casts from its back as well as its front
+}
+
 }  // namespace lab02
