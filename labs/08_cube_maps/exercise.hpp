@@ -1,7 +1,11 @@
 /// @file exercise.hpp
 /// Lab 08 C++ exercises. The signatures are fixed: the app, the tests and the grader call them.
 #pragma once
+#include "common/scene/scene.hpp"
+
 #include <glm/glm.hpp>
+
+#include <vector>
 
 namespace lab08 {
 
@@ -11,5 +15,9 @@ namespace lab08 {
 /// −Y for ±X and ±Z, +Z for +Y, −Z for −Y (so that texture(samplerCube, direction) finds what the
 /// face drew).
 glm::mat4 cubeFaceViewProj(int face, const glm::vec3& light, float nearPlane, float farPlane);
+
+/// EXERCISE 08.H1 (a bug hunt: working code with a real bug in it; README.md): the faces' near and
+/// far planes, (near, far), for a light at `light` among `objects`.
+glm::vec2 cubeNearFar(const std::vector<wb::SceneObject>& objects, const glm::vec3& light);
 
 }  // namespace lab08

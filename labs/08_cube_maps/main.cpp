@@ -1,8 +1,8 @@
 // Lab 08: point lights and cube shadow maps
 // ---------------------------------------------------------------------------------------------
 // Difficulty: 3/5. Handout: README.md beside this file.
-// Exercises:  08.1 in exercise.cpp; 08.2, 08.4 and 08.5 in shaders/exercise.glsl; 08.3 in
-//             shaders/exercise_layered.geom.
+// Exercises:  08.1 and the bug hunt 08.H1 in exercise.cpp; 08.2, 08.4 and 08.5 in
+//             shaders/exercise.glsl; 08.3 in shaders/exercise_layered.geom.
 // Controls:   drag to orbit, wheel to zoom, 1-9 camera bookmarks, F12 screenshot.
 // A point light shines every way, so one perspective map cannot hold its shadows: six can, one per
 // face of a cube around the light. Each face is a 90° square frustum with its own up vector; the
@@ -58,8 +58,8 @@ class CubeLab : public wb::Lab {
 
   void render() override {
     const wb::Light light = pointLight();
-    const glm::vec2 nearFar = nearFarFromBounds(light.position);
-    bool ready = true;
+    glm::vec2 nearFar{0.01f, 1.0f};
+    bool ready = attempt("08.H1", nearFar, [&] { return lab08::cubeNearFar(scene.objects, light.position); });
     for (int k = 0; k < 6; ++k)
       ready = attempt("08.1", faces[size_t(k)],
                       [&] { return lab08::cubeFaceViewProj(k, light.position, nearFar.x, nearFar.y); }) &&
@@ -138,20 +138,6 @@ class CubeLab : public wb::Lab {
         return l;
       }
     throw wb::UsageError(scene.path.string() + " has no point light; lab 08 needs one (try scenes/cube_lantern.json)");
-  }
-
-  // Far from the scene: the farthest vertex from the light, since a face's depth along its axis is
-  // never more than the distance. Near is a plane, not a sphere: a point at distance r sits at depth
-  // r cos(angle off the axis) in its face, as little as r / sqrt(3) in a corner, so a near plane at
-  // the nearest vertex's distance clips the near side of casters seen off-axis, and their shadows
-  // lose their far rim. The depth written is a linear distance (08.2), so the projection's depth
-  // precision never matters and near can be small: 1 cm, which clips only what touches the bulb.
-  glm::vec2 nearFarFromBounds(const glm::vec3& light) const {
-    float farthest = 0;
-    for (const auto& o : scene.objects)
-      for (const auto& v : o.mesh.vertices)
-        farthest = std::max(farthest, glm::length(glm::vec3(o.model * glm::vec4(v.position, 1)) - light));
-    return {0.01f, std::max(farthest * 1.01f, 0.1f)};
   }
 
   // What the cube was last drawn with.
