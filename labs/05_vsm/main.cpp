@@ -35,6 +35,7 @@ class VsmLab : public wb::Lab {
     glslExercise("05.1", "exercise.glsl", "vsmMoments(0.5, 0.0, 0.0).x");
     glslExercise("05.2", "exercise.glsl", "chebyshevUpperBound(vec2(0.5, 0.3), 0.6, 0.0)");
     glslExercise("05.3", "exercise.glsl", "reduceLightBleeding(0.5, 0.2)");
+    glslExercise("05.H1", "exercise.glsl", "shadowMapCoord(mat4(1.0), vec3(0.0)).x");  // a bug hunt: never a stub
     attempt("05.4", [] { lab05::worstThreePlaneBleeding(1.0); });
     if (printExperiments) runExperiments(true);
   }

@@ -19,3 +19,16 @@ float chebyshevUpperBound(vec2 moments, float receiverDepth, float minVariance) 
 float reduceLightBleeding(float pMax, float amount) {
   return WB_TODO;
 }
+
+// EXERCISE 05.H1: bug hunt, "under the spot light everything is in shadow" (README.md, Bug hunt
+// 05.H1).
+// Not a stub: this is the lab's working code, and it has a bug of a kind that shipped in real
+// projects. Find it from the symptom; the handout says how to see it and how it is measured.
+// Where the map holds the answer for the point `world`: its uv in the map, and its depth as the
+// light's pass stored depths (gl_FragCoord.z), for the comparison.
+vec3 shadowMapCoord(mat4 lightViewProj, vec3 world) {
+  vec4 clip = lightViewProj * vec4(world, 1.0);
+  vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+  float depth = clip.z * 0.5 + 0.5;
+  return vec3(uv, depth);
+}

@@ -23,8 +23,7 @@ void main() {
   vec3 n = normalize(v_normal);
   if (!gl_FrontFacing) n = -n;
   vec3 toLight = wbToLight(v_world);
-  vec4 clip = u_lightViewProj * vec4(v_world, 1.0);
-  vec3 coord = clip.xyz / clip.w * 0.5 + 0.5;
+  vec3 coord = shadowMapCoord(u_lightViewProj, v_world);  // (05.H1)
 
   vec2 moments = texture(u_shadowMap, coord.xy).rg;
   float visibility = chebyshevUpperBound(moments, coord.z, u_minVariance);
