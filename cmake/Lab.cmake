@@ -83,12 +83,19 @@ function(_wb_register_tests lab nn variant target ids)
     string(REPLACE "." ";" parts ${id})
     list(GET parts 1 k)
     set(props TIMEOUT 120)
-    if(k MATCHES "^H" AND variant STREQUAL "student" AND WB_EXPECT_STUBS AND EXISTS ${PROJECT_SOURCE_DIR}/solutions)
-      # A hunt is handed out as working code with its bug in place: its tests must find it WRONG.
-      list(APPEND props PASS_REGULAR_EXPRESSION "WRONG" FAIL_REGULAR_EXPRESSION "NOT IMPLEMENTED|ERROR")
-    elseif(k MATCHES "^H" AND variant STREQUAL "student" AND WB_EXPECT_STUBS)
-      # The student edition: a hunt is still buggy (WRONG) or fixed (its test passes), never an error.
-      list(APPEND props PASS_REGULAR_EXPRESSION "WRONG|  PASSED  . 1 test" FAIL_REGULAR_EXPRESSION "ERROR")
+    if(k MATCHES "^H" AND variant STREQUAL "student" AND WB_EXPECT_STUBS)
+      # A hunt is handed out as working code with its bug in place: each of its tests finds it WRONG or
+      # passes (a test that holds a wrong fix back may pass on the bug), never an error; that the hunt
+      # as a whole is WRONG is hunt.labNN.ID's to prove (in the instructor's tree), and in the student
+      # edition a fixed hunt passes.
+      list(APPEND props PASS_REGULAR_EXPRESSION "WRONG|  PASSED  . 1 test" FAIL_REGULAR_EXPRESSION
+           "ERROR|NOT IMPLEMENTED")
+      if(EXISTS ${PROJECT_SOURCE_DIR}/solutions)
+        # Its bug is found, and named as no known mistake (its wrong fixes' hints must not fire on it).
+        add_test(NAME hunt.lab${nn}.${k} COMMAND ${target} --gtest_filter=*Ex${tag}_* --expect-mistake ${id}
+                                                 --expect-hint "")
+        set_tests_properties(hunt.lab${nn}.${k} PROPERTIES LABELS "lab${nn};hunts" TIMEOUT 120)
+      endif()
     elseif(variant STREQUAL "student" AND WB_EXPECT_STUBS AND EXISTS ${PROJECT_SOURCE_DIR}/solutions)
       list(APPEND props PASS_REGULAR_EXPRESSION "NOT IMPLEMENTED")  # the repo's stubs, as handed out
     elseif(variant STREQUAL "student" AND WB_EXPECT_STUBS)

@@ -1,7 +1,7 @@
 // Lab 06: EVSM, exponential variance shadow maps
 // ---------------------------------------------------------------------------------------------
 // Difficulty: 3/5. Handout: README.md beside this file.
-// Exercises:  06.1, 06.3 in shaders/exercise.glsl; 06.2 in exercise.cpp.
+// Exercises:  06.1, 06.3 in shaders/exercise.glsl; 06.2 and the bug hunt 06.H1 in exercise.cpp.
 // Controls:   drag to orbit, wheel to zoom, 1-9 camera bookmarks, F12 screenshot.
 // VSM bleeds where occluders are far apart compared with their distance to the receiver. Warping
 // depth exponentially before taking moments squeezes that ratio, and a second, negative warp
@@ -44,15 +44,15 @@ class EvsmLab : public wb::Lab {
     const GLenum glFormat = format == 0 ? GL_RGBA32F : GL_RGBA16F;
     map.resize(shadowMapSize(), prefilter.options(glFormat));
 
-    // The exponents' bound (06.2): exp(c)^2 must fit the format.
-    float pos = cPos, neg = cNeg;
+    // The exponents' bound (06.2): exp(c)^2 must fit the format; the exponents used under it (06.H1).
     double bound = 0;
-    if (attempt("06.2", bound, [&] { return lab06::evsmMaxExponent(wb::formatMax(glFormat)); }) &&
-        std::max(cPos, cNeg) > bound) {
-      pos = std::min(cPos, float(bound) * 0.999f), neg = std::min(cNeg, float(bound) * 0.999f);
+    if (!attempt("06.2", bound, [&] { return lab06::evsmMaxExponent(wb::formatMax(glFormat)); })) bound = 1e30;
+    glm::vec2 used(cPos, cNeg);
+    attempt("06.H1", used, [&] { return lab06::usableExponents(cPos, cNeg, bound, format == 1); });
+    const float pos = used.x, neg = used.y;
+    if (used != glm::vec2(cPos, cNeg))
       warn("an EVSM exponent above " + std::to_string(bound) + " overflows " + (format == 0 ? "fp32" : "fp16") +
            "; clamped");
-    }
 
     // PASS 1: the warped moments from the light, then the separable prefilter.
     const bool msm = technique == 1;

@@ -2,6 +2,7 @@
 // layer 2: the bench scene against golden visibility (./workbook golden 06).
 #include "exercise.hpp"
 #include "tests/harness/harness.hpp"
+#include "tests/harness/hunt.hpp"
 
 #include <algorithm>
 #include <cfloat>
@@ -193,4 +194,24 @@ TEST(Lab06, Ex06_3_SceneTwoChannels) {
 TEST(Lab06, Ex06_x_SceneBenchMsm) {
   wb::test::expectSceneMatchesGolden("06.x", "bench_msm",
                                      wb::test::labArgs({"prefilter.kernel=5", "evsm.technique=msm"}), 0.1f, 0.005);
+}
+
+// --- Bug hunt 06.H1: "a larger c+ brings the light bleeding back" -------------------------------------
+// Both exponents at 100, above what fp32 holds (./workbook run 06 --headless --size 480x270 --set
+// evsm.c_positive=100 --set evsm.c_negative=100 --set prefilter.kernel=5 --metrics): the reference
+// clamps them and measures acne 0.12%, leak 0.67%, as at c+ = 40.
+TEST(Lab06, Ex06_H1_MeasuredLargeExponents) {
+  wb::test::expectSymptomGone("06.H1", "hunt_c100",
+                              wb::test::labArgs({"evsm.c_positive=100", "evsm.c_negative=100", "prefilter.kernel=5"}),
+                              {1.0, 2.0});
+}
+TEST(Lab06, Ex06_H1_SceneLargeExponents) {
+  wb::test::expectSceneMatchesGolden(
+      "06.H1", "hunt_c100", wb::test::labArgs({"evsm.c_positive=100", "evsm.c_negative=100", "prefilter.kernel=5"}),
+      0.1f, 0.005);
+}
+// fp16's bound is far lower (about 5.5): the default exponents are clamped there, as 06.2's scene shows.
+TEST(Lab06, Ex06_H1_SceneFp16) {
+  wb::test::expectSceneMatchesGolden("06.H1", "bench_fp16",
+                                     wb::test::labArgs({"prefilter.kernel=5", "evsm.format=fp16"}), 0.1f, 0.005);
 }
