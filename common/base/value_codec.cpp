@@ -82,6 +82,7 @@ std::array<glm::vec3, N> cornersOf(const json& j) {
 
 json encode(const std::array<glm::vec3, 8>& v) { return corners(v); }
 json encode(const std::array<glm::vec3, 4>& v) { return corners(v); }
+json encode(const std::array<glm::mat4, 2>& v) { return json::array({encode(v[0]), encode(v[1])}); }
 
 template <>
 float decode<float>(const json& j) {
@@ -163,6 +164,11 @@ std::array<glm::vec3, 8> decode<std::array<glm::vec3, 8>>(const json& j) {
 template <>
 std::array<glm::vec3, 4> decode<std::array<glm::vec3, 4>>(const json& j) {
   return cornersOf<4>(j);
+}
+template <>
+std::array<glm::mat4, 2> decode<std::array<glm::mat4, 2>>(const json& j) {
+  if (!j.is_array() || j.size() != 2) throw Error("a recorded pair of matrices has the wrong shape");
+  return {decode<glm::mat4>(j[0]), decode<glm::mat4>(j[1])};
 }
 
 }  // namespace wb

@@ -26,6 +26,7 @@ nlohmann::json encode(const std::vector<uint32_t>& v);     ///< as they are (ind
 nlohmann::json encode(const std::vector<float>& v);        ///< every float's bits, in order
 nlohmann::json encode(const std::array<glm::vec3, 8>& v);  ///< every float's bits, corner by corner
 nlohmann::json encode(const std::array<glm::vec3, 4>& v);  ///< every float's bits, corner by corner
+nlohmann::json encode(const std::array<glm::mat4, 2>& v);  ///< both matrices, column by column
 /// Decodes what encode() wrote; throws wb::Error on malformed data.
 template <class T>
 T decode(const nlohmann::json& j);

@@ -17,4 +17,15 @@ glm::mat4 directionalLightViewProj(const glm::vec3& direction, const glm::vec3& 
 glm::mat4 spotLightViewProj(const glm::vec3& position, const glm::vec3& direction, float halfAngleDeg, float nearPlane,
                             float farPlane);
 
+/// The light's matrix as each pass of a frame uses it: the shadow pass renders the map through
+/// `shadowPass`, and the camera pass reads the map through `cameraPass`.
+struct PassMatrices {
+  glm::mat4 shadowPass{1};
+  glm::mat4 cameraPass{1};
+};
+
+/// EXERCISE 01.H1 (a bug hunt: working code with a real bug in it; README.md): the passes' matrices
+/// for this frame, from last frame's `last` and this frame's light matrix `lightViewProj`.
+PassMatrices updatePassMatrices(const PassMatrices& last, const glm::mat4& lightViewProj);
+
 }  // namespace lab01

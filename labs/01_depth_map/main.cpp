@@ -1,14 +1,18 @@
 // Lab 01: Depth map, the shadow-mapping principle
 // ---------------------------------------------------------------------------------------------
 // Difficulty: 1/5. Handout: README.md beside this file.
-// Exercises:  01.1, 01.2 in exercise.cpp; 01.3, 01.4, 01.5 in shaders/exercise.glsl.
+// Exercises:  01.1, 01.2 and the bug hunt 01.H1 in exercise.cpp; 01.3, 01.4, 01.5 in
+//             shaders/exercise.glsl.
 // Controls:   drag to orbit, wheel to zoom, 1-9 camera bookmarks, F12 screenshot.
 // Two passes: the light renders the scene's depth into a texture (the shadow map); the camera then
 // renders the scene and asks, per pixel, whether the light saw something nearer than this point.
 #include "common/shell/lab.hpp"
 #include "exercise.hpp"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
+
+#include <array>
 
 #include <cmath>
 
@@ -16,7 +20,12 @@ namespace {
 
 class DepthMapLab : public wb::Lab {
  public:
-  DepthMapLab() : Lab("scenes/depth_map.json") { useDepthBias(); }
+  DepthMapLab() : Lab("scenes/depth_map.json") {
+    useDepthBias();
+    settings.add("light.spin", spin, -90.0f, 90.0f,
+                 "degrees per second the light turns about the vertical axis while the lab runs (headless: 1/60 s a "
+                 "frame; the bug hunt 01.H1)");
+  }
 
  protected:
   void init() override {
@@ -31,8 +40,10 @@ class DepthMapLab : public wb::Lab {
     attempt("01.2", [] { lab01::spotLightViewProj({0, 5, 0}, {0, -1, 0}, 30, 0.5f, 20); });
   }
 
+  void update(float dt) override { spun += spin * dt; }
+
   void render() override {
-    const wb::Light& light = scene.lights[lightIndex];
+    const wb::Light light = turned(scene.lights[lightIndex], spun);
     if (light.type == wb::LightType::Point) {
       warn("lab 01 casts shadows from directional and spot lights; light " + std::to_string(lightIndex) +
            " is a point light (lab 08 covers those)");
@@ -49,18 +60,28 @@ class DepthMapLab : public wb::Lab {
                  return lab01::directionalLightViewProj(light.direction, scene.boundsMin, scene.boundsMax);
                });
     shadowMap.resize(shadowMapSize());
+    // A turning light: each pass's matrix from this frame's and last frame's (01.H1), the light's
+    // matrix from the framework's fit (01.1 and 01.2 are graded on still lights, where this is unused).
+    const glm::mat4 moving = wb::lightViewProj(light, scene);
+    if (!started) passes = {{moving, moving}}, started = true;  // (the first frame has no earlier one)
+    attempt("01.H1", passes, [&] {
+      const lab01::PassMatrices now = lab01::updatePassMatrices({passes[0], passes[1]}, moving);
+      return std::array<glm::mat4, 2>{now.shadowPass, now.cameraPass};
+    });
+    const bool turning = spun != 0;
+    const glm::mat4 shadowPass = turning ? passes[0] : lightViewProj, cameraPass = turning ? passes[1] : lightViewProj;
 
     // PASS 1: depth from the light. No colour target; only the depth buffer is kept.
     // Every face is drawn (no culling): the leaves are open quads, and any face may cast a shadow.
     if (ready) {
       auto timer = timePass("shadow");
-      renderShadowMap(*depthProgram, shadowMap, light, lightViewProj);
+      renderShadowMap(*depthProgram, shadowMap, light, shadowPass);
     }
 
     // PASS 2: the camera's view, with the shadow test per pixel.
     auto timer = timePass("lighting");
     const wb::Program& p = *sceneProgram;
-    beginCameraPass(p, light, lightViewProj, shadowMap.texture());
+    beginCameraPass(p, light, cameraPass, shadowMap.texture());
     p.set("u_shadowsReady", ready ? 1 : 0);
     p.set("u_bias", depthBias());
     gpuScene->draw(p);
@@ -71,6 +92,17 @@ class DepthMapLab : public wb::Lab {
   wb::Program* sceneProgram = nullptr;  // PASS 2
   wb::ShadowMap shadowMap;
   glm::mat4 lightViewProj{1};
+  float spin = 0;                     // light.spin: degrees per second
+  float spun = 0;                     // degrees turned so far
+  bool started = false;               // passes holds a frame's matrices
+  std::array<glm::mat4, 2> passes{};  // the shadow pass's and the camera pass's light matrix (01.H1)
+
+  // `light` turned by `degrees` about the vertical axis through the origin.
+  static wb::Light turned(wb::Light light, float degrees) {
+    const glm::mat3 turn(glm::rotate(glm::mat4(1), glm::radians(degrees), glm::vec3(0, 1, 0)));
+    light.position = turn * light.position, light.direction = turn * light.direction;
+    return light;
+  }
 };
 
 }  // namespace
