@@ -1,7 +1,8 @@
 // Lab 02: Bias, acne and peter-panning
 // ---------------------------------------------------------------------------------------------
 // Difficulty: 2/5. Handout: README.md beside this file.
-// Exercises:  02.3, 02.4 and the bug hunt 02.H1 in exercise.cpp; 02.1, 02.2, 02.5, 02.6 in shaders/exercise.glsl.
+// Exercises:  02.3, 02.4 and the bug hunt 02.H1 in exercise.cpp; 02.1, 02.2, 02.5, 02.6 and the bug
+//             hunt 02.H2 in shaders/exercise.glsl.
 // Controls:   drag to orbit, wheel to zoom, 1-9 camera bookmarks, F12 screenshot; "Measure" in the
 //             info panel compares the frame with exact (ray-cast) visibility.
 // Every remedy for shadow acne trades it for something else. This lab puts six of them on one scene
@@ -45,6 +46,7 @@ class BiasLab : public wb::Lab {
     glslExercise("02.6", "exercise.glsl",
                  "receiverPlaneDepthBias(vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0)).x + "
                  "receiverPlaneTapDepth(0.5, vec2(0.0), vec2(0.0), vec2(0.0))");
+    glslExercise("02.H2", "exercise.glsl", "0.0");  // a bug hunt: working code, never a stub
     attempt("02.3", [] { lab02::d3dDepthBias(0, 0, 0, 0, 0.5f); });
     attempt("02.4", [] { lab02::cullForDepthPass(false); });
   }

@@ -1,7 +1,7 @@
 // Lab 07: PCSS, percentage-closer soft shadows
 // ---------------------------------------------------------------------------------------------
 // Difficulty: 3/5. Handout: README.md beside this file.
-// Exercises:  07.1 - 07.4, all in shaders/exercise.glsl.
+// Exercises:  07.1 - 07.4 and the bug hunt 07.H1, all in shaders/exercise.glsl.
 // Controls:   drag to orbit, wheel to zoom, 1-9 camera bookmarks, F12 screenshot.
 // A light with a size casts shadows that are sharp where the caster touches the receiver and soft
 // further away. PCSS estimates that width per pixel from the shadow map: it searches for blockers,
@@ -42,6 +42,7 @@ class PcssLab : public wb::Lab {
     glslExercise("07.3", "exercise.glsl", "pcssPenumbraWidth(4.0, 2.0, 0.2)");
     glslExercise("07.4", "exercise.glsl",
                  "pcss(wb_tex0, vec2(0.5), 4.0, PcssSettings(0.2, vec2(1.0, 10.0), 16, 16, 0.0, 0.0), uvec2(0u))");
+    glslExercise("07.H1", "exercise.glsl", "0.0");  // a bug hunt: working code, never a stub
   }
 
   void render() override {
@@ -70,7 +71,7 @@ class PcssLab : public wb::Lab {
     p.set("u_searchSamples", kCounts[searchSamples]);
     p.set("u_filterSamples", kCounts[filterSamples]);
     p.set("u_minFilterUV", minFilterTexels * texel);
-    p.set("u_pcfWidthUV", pcfWidthTexels * texel);
+    p.set("u_pcfWidthTexels", pcfWidthTexels);
     p.set("u_bias", depthBias());
     gpuScene->draw(p);
   }

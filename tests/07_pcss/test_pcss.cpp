@@ -12,6 +12,7 @@
 #include <cmath>
 #include <functional>
 #include <iomanip>
+#include <sstream>
 
 using wb::test::GlTest;
 
@@ -308,4 +309,37 @@ TEST(Lab07, Ex07_4_MeasuredPenumbraFollowsTheTheory) {
   const double ratio = wb::test::penumbraGrowthRatio(m);
   EXPECT_NEAR(ratio, 1.0, 0.25) << "WRONG: the penumbra grows " << ratio
                                 << " times as fast as the theory says, with the receiver-blocker distance";
+}
+
+// --- Bug hunt 07.H1: "the PCF comparison blurs more on a sharper map" ---------------------------------
+// pcss.method=pcf's filter is `widthTexels` texels of the map it reads, whatever the map's size. On a
+// 64-texel map with blockers (distance 4) left of u = 0.5 and a receiver at 8, a 16-texel filter (its
+// taps within 8 texels of the pixel) must be partly lit 4.5 texels inside the shadow and partly
+// shadowed 4.5 texels outside it, and certain 9.5 texels either way.
+TEST_F(GlTest, Ex07_H1_TheFilterIsItsWidthInTexelsOfThisMap) {
+  const Map map([](int x, int) { return x < kSize / 2 ? 4.0 : kFar; });
+  const std::vector<double> texels = {-9.5, -4.5, 4.5, 9.5};
+  std::vector<glm::vec4> in;
+  for (double x : texels) in.emplace_back(float(0.5 + x / kSize), 0.5f, 0, 0);
+  std::vector<glm::vec4> got;
+  WB_RUN_GLSL(got, "07.H1",
+              "result.x = fixedPcf(wb_tex0, IN(0).xy, 8.0, 16.0, 0.01, vec2(1.0, 10.0), 32, uvec2(3u, 5u));",
+              int(in.size()), 1, in, {map.texture.id()});
+  const auto where = [&](size_t k) {
+    std::ostringstream s;
+    s << std::abs(texels[k]) << " texels " << (texels[k] < 0 ? "inside" : "outside")
+      << " a shadow's edge, 16-texel PCF on a 64-texel map";
+    return s.str();
+  };
+  EXPECT_EQ(got[0].x, 0.0f) << "WRONG: fully shadowed " << where(0);
+  EXPECT_GT(got[1].x, 0.0f) << "WRONG: partly lit " << where(1) << " (the filter reaches 8 texels)";
+  EXPECT_LT(got[2].x, 1.0f) << "WRONG: partly shadowed " << where(2) << " (the filter reaches 8 texels)";
+  EXPECT_EQ(got[3].x, 1.0f) << "WRONG: fully lit " << where(3);
+}
+
+// The scene's comparison at a 2048 map (./workbook run 07 --headless --set pcss.method=pcf --set
+// shadow.map_size=2048): against the reference's picture.
+TEST(Lab07, Ex07_H1_ScenePcfOnALargeMap) {
+  wb::test::expectSceneMatchesGolden("07.H1", "hunt_pcf_2048",
+                                     wb::test::labArgs({"pcss.method=pcf", "shadow.map_size=2048"}), 0.1f, 0.01);
 }

@@ -40,3 +40,13 @@ vec2 receiverPlaneDepthBias(vec3 dCoordDx, vec3 dCoordDy) {
 float receiverPlaneTapDepth(float receiverDepth, vec2 dzduv, vec2 tapOffset, vec2 texelSize) {
   return WB_TODO;
 }
+
+// EXERCISE 02.H2: bug hunt, "normal offset cannot clear the acne under the lamp" (README.md, Bug hunt
+// 02.H2). Not a stub: this is the lab's working code, and it has a bug of a kind that shipped in real
+// engines (and in this workbook). Find it from the symptom; the handout says how to see it.
+// The width in world units of the map's texel at `worldPos`: what normal offset (02.5) moves by.
+// texelWorld is the map's texel size as the lab measures it: for a directional light the same
+// everywhere; for a spot light (spot true, at lightPos, along lightDir) the size at depth 1.
+float texelWorldAt(vec3 worldPos, float texelWorld, bool spot, vec3 lightPos, vec3 lightDir) {
+  return texelWorld;
+}

@@ -36,10 +36,9 @@ void main() {
   vec3 albedo = u_color * texel.rgb;
   vec3 n = normalize(v_normal);
   if (!gl_FrontFacing) n = -n;
-  // A spot light's rays fan out: the slope and the offset use this pixel's own direction to the light,
-  // and its texel is as wide as the map's frustum is at this depth.
+  // A spot light's rays fan out: the slope and the offset use this pixel's own direction to the light.
   vec3 toLight = wbToLight(v_world);
-  float texelWorld = u_spot != 0 ? u_texelWorld * dot(v_world - u_lightPos, u_lightDir) : u_texelWorld;
+  float texelWorld = texelWorldAt(v_world, u_texelWorld, u_spot != 0, u_lightPos, u_lightDir);  // (02.H2)
   float cosTheta = dot(n, toLight);
 
   vec3 coord = shadowCoord(v_world);

@@ -39,3 +39,19 @@ float pcssPenumbraWidth(float zReceiver, float zBlocker, float lightSize) {
 float pcss(sampler2D map, vec2 uv, float zReceiver, PcssSettings s, uvec2 pixel) {
   return WB_TODO;
 }
+
+// EXERCISE 07.H1: bug hunt, "the PCF comparison blurs more on a sharper map" (README.md, Bug hunt
+// 07.H1). Not a stub: this is the lab's working code, and it has a bug of a kind that shipped in a
+// real engine. Find it from the symptom; the handout says how to see it and how it is measured.
+// pcss.method=pcf, the comparison: one fixed filter width everywhere, `widthTexels` texels of `map`,
+// with the same taps as PCSS's filter (samples of the rotated Poisson disk, a receiver at zReceiver
+// lit by a tap whose depth is beyond it by `bias`).
+float fixedPcf(sampler2D map, vec2 uv, float zReceiver, float widthTexels, float bias, vec2 nearFar, int samples,
+               uvec2 pixel) {
+  float widthUV = widthTexels / 512.0;
+  mat2 rotation = pcssRotation(pixel);
+  float sum = 0.0;
+  for (int k = 0; k < samples; ++k)
+    sum += step(zReceiver - bias, pcssDepthAt(map, uv + rotation * WB_POISSON_DISK[k] * (0.5 * widthUV), nearFar));
+  return sum / float(samples);
+}

@@ -14,20 +14,11 @@ uniform sampler2D u_shadowMap;
 uniform mat4 u_lightViewProj;
 uniform vec3 u_lightPos;
 uniform vec3 u_lightDir;  // the spot's axis, the direction the light travels
-uniform float u_lightSizeUV, u_minFilterUV, u_pcfWidthUV, u_bias;
+uniform float u_lightSizeUV, u_minFilterUV, u_pcfWidthTexels, u_bias;
 uniform vec2 u_nearFar;
 uniform float u_lightSize;  // the disk's diameter, world units
 uniform int u_searchSamples, u_filterSamples;
 
-// pcss.method=pcf: one fixed width everywhere, the same taps as PCSS's filter (the comparison).
-float fixedPcf(vec2 uv, float zReceiver, uvec2 pixel) {
-  mat2 rotation = pcssRotation(pixel);
-  float lit = 0.0;
-  for (int k = 0; k < u_filterSamples; ++k)
-    lit += step(zReceiver - u_bias, pcssDepthAt(u_shadowMap, uv + rotation * WB_POISSON_DISK[k] * (0.5 * u_pcfWidthUV),
-                                                u_nearFar));
-  return lit / float(u_filterSamples);
-}
 
 void main() {
   vec4 texel = u_hasTexture != 0 ? texture(u_albedo, v_uv) : vec4(1.0);
@@ -53,7 +44,8 @@ void main() {
     return;
   }
 #if PCSS_METHOD == 1
-  float visibility = fixedPcf(uv, zReceiver, uvec2(gl_FragCoord.xy));
+  float visibility = fixedPcf(u_shadowMap, uv, zReceiver, u_pcfWidthTexels, u_bias, u_nearFar, u_filterSamples,
+                              uvec2(gl_FragCoord.xy));  // (07.H1)
 #else
   float visibility = pcss(u_shadowMap, uv, zReceiver, s, uvec2(gl_FragCoord.xy));
 #endif

@@ -39,3 +39,18 @@ float pcss(sampler2D map, vec2 uv, float zReceiver, PcssSettings s, uvec2 pixel)
     lit += step(zReceiver - s.bias, pcssDepthAt(map, uv + rotation * WB_POISSON_DISK[k] * (0.5 * width), s.nearFar));
   return lit / float(s.filterSamples);
 }
+
+// EXERCISE 07.H1: bug hunt, "the PCF comparison blurs more on a sharper map" (README.md, Bug hunt
+// 07.H1).
+// pcss.method=pcf, the comparison: one fixed filter width everywhere, `widthTexels` texels of `map`,
+// with the same taps as PCSS's filter (samples of the rotated Poisson disk, a receiver at zReceiver
+// lit by a tap whose depth is beyond it by `bias`).
+float fixedPcf(sampler2D map, vec2 uv, float zReceiver, float widthTexels, float bias, vec2 nearFar, int samples,
+               uvec2 pixel) {
+  float widthUV = widthTexels / float(textureSize(map, 0).x);
+  mat2 rotation = pcssRotation(pixel);
+  float sum = 0.0;
+  for (int k = 0; k < samples; ++k)
+    sum += step(zReceiver - bias, pcssDepthAt(map, uv + rotation * WB_POISSON_DISK[k] * (0.5 * widthUV), nearFar));
+  return sum / float(samples);
+}
