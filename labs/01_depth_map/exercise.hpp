@@ -20,8 +20,8 @@ glm::mat4 spotLightViewProj(const glm::vec3& position, const glm::vec3& directio
 /// The light's matrix as each pass of a frame uses it: the shadow pass renders the map through
 /// `shadowPass`, and the camera pass reads the map through `cameraPass`.
 struct PassMatrices {
-  glm::mat4 shadowPass{1};
-  glm::mat4 cameraPass{1};
+  glm::mat4 shadowPass{1};  ///< the light's matrix the shadow pass renders the map with
+  glm::mat4 cameraPass{1};  ///< the light's matrix the camera pass reads the map with
 };
 
 /// EXERCISE 01.H1 (a bug hunt: working code with a real bug in it; README.md): the passes' matrices
