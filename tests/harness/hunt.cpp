@@ -9,9 +9,10 @@ namespace wb::test {
 
 void expectSymptomGone(const std::string& id, const std::string& name, std::vector<std::string> args,
                        const SymptomBounds& bounds) {
-  const std::string heatmap = (testOutputDir() / (name + "_heatmap.png")).string();
+  // (Its own run folder: a golden test of the same scene may run at the same time, under `name`.)
+  const std::string run = name + "_symptom", heatmap = (testOutputDir() / (run + "_heatmap.png")).string();
   args.insert(args.end(), {"--heatmap", heatmap});
-  const SceneMetrics m = measureScene(id, name, args);
+  const SceneMetrics m = measureScene(id, run, args);
   if (!m.failure.empty()) FAIL() << m.failure;
   EXPECT_LE(m.acnePercent, bounds.acnePercent) << strf(
       "WRONG: in scene '%s', %.2f%% of the pixels the light truly reaches are drawn in shadow (a fix: at "
