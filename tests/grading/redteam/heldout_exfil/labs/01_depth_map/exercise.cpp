@@ -84,4 +84,12 @@ glm::mat4 spotLightViewProj(const glm::vec3& position, const glm::vec3& directio
   return projection * view;
 }
 
+// EXERCISE 01.H1: bug hunt, "the shadows swim while the sun moves".
+PassMatrices updatePassMatrices(const PassMatrices& last, const glm::mat4& lightViewProj) {
+  PassMatrices now = last;
+  now.shadowPass = lightViewProj;   // this frame's light first...
+  now.cameraPass = now.shadowPass;  // ...then the camera pass reads the map through the same matrix
+  return now;
+}
+
 }  // namespace lab01
