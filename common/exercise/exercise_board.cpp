@@ -35,7 +35,8 @@ ExerciseBoard::ExerciseBoard(const fs::path& manifest) {
     if (j.contains("picture")) pictureName_ = j.at("picture").get<std::string>();
     if (!pictureName_.empty()) picture_ = manifest.parent_path() / pictureName_;
     for (const auto& e : j.at("exercises"))
-      exercises_.push_back({e.at("id").get<std::string>(), e.at("title").get<std::string>(), {}, {}});
+      exercises_.push_back({e.at("id").get<std::string>(), e.at("title").get<std::string>(), {}, {},
+                            e.value("kind", std::string()) == "hunt"});
   } catch (const std::exception& e) {
     std::fprintf(stderr, "warning: cannot read %s (%s); the exercise list will be empty\n", manifest.string().c_str(),
                  e.what());
@@ -46,6 +47,12 @@ const ExerciseStatus* ExerciseBoard::next() const {
   for (const auto& e : exercises_)
     if (e.state == ExerciseState::NotImplemented || e.state == ExerciseState::Failed) return &e;
   return nullptr;
+}
+
+bool ExerciseBoard::hasHunts() const {
+  for (const auto& e : exercises_)
+    if (e.hunt) return true;
+  return false;
 }
 
 ExerciseState ExerciseBoard::stateOf(const std::string& id) const {

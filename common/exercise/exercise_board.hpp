@@ -24,6 +24,7 @@ struct ExerciseStatus {
   std::string title;                             ///< from the lab's exercises.json
   ExerciseState state = ExerciseState::Unknown;  ///< last observed state
   std::string message;                           ///< why it is not implemented or failed
+  bool hunt = false;                             ///< a bug hunt ("kind": "hunt"): working code with a bug
 };
 
 /// The exercise list of one lab, with states and GLSL probes.
@@ -46,6 +47,8 @@ class ExerciseBoard {
   const ExerciseStatus* next() const;
   /// Every exercise in manifest order.
   const std::vector<ExerciseStatus>& exercises() const { return exercises_; }
+  /// True when the lab has bug hunts (the window then measures their symptom live).
+  bool hasHunts() const;
   /// The state of exercise `id` (ExerciseState::Unknown for an id the manifest does not list).
   ExerciseState stateOf(const std::string& id) const;
   /// Records an exercise's state; unknown ids are ignored.

@@ -219,6 +219,12 @@ Scene Scene::load(const fs::path& file) {
   return scene;
 }
 
+Light turnedAboutY(Light light, float degrees) {
+  const glm::mat3 turn(glm::rotate(glm::mat4(1), glm::radians(degrees), glm::vec3(0, 1, 0)));
+  light.position = turn * light.position, light.direction = turn * light.direction;
+  return light;
+}
+
 void varyScene(Scene& scene, uint32_t seed) {
   std::mt19937 rng(seed);  // fully specified, so every build turns the scene the same way
   auto uniform = [&](float lo, float hi) { return lo + (hi - lo) * float(rng() >> 8) / float(1u << 24); };

@@ -77,6 +77,10 @@ struct Scene {
   static Scene load(const std::filesystem::path& file);
 };
 
+/// `light` turned by `degrees` about the vertical axis through the world's origin (its position and
+/// its direction; a turning sun, the lights' orbit setting).
+Light turnedAboutY(Light light, float degrees);
+
 /// Perturbs `scene` deterministically from `seed` (grading-time variations, so a render cannot be
 /// copied from published data): every light turns by 1 to 3 degrees (spot and point lights also
 /// move by up to 2% of the scene's size) and every camera bookmark turns by up to 3 degrees.

@@ -115,10 +115,8 @@ void Lab::warn(const std::string& message) {
 void Lab::applyMotion() {
   if (lightOrbit_ != appliedOrbit_) {
     if (baseLights_.empty()) baseLights_ = scene.lights;
-    const glm::mat3 turn(glm::rotate(glm::mat4(1), glm::radians(lightOrbit_), glm::vec3(0, 1, 0)));
     for (size_t k = 0; k < scene.lights.size() && k < baseLights_.size(); ++k)
-      scene.lights[k].position = turn * baseLights_[k].position,
-      scene.lights[k].direction = turn * baseLights_[k].direction;
+      scene.lights[k] = turnedAboutY(baseLights_[k], lightOrbit_);
     appliedOrbit_ = lightOrbit_;
   }
   if (cameraDolly_ != appliedDolly_ && bookmark_ >= 1 && bookmark_ <= int(scene.cameras.size())) {

@@ -169,6 +169,8 @@ void LabHost::host(std::unique_ptr<Lab> lab) {
   lab_->board_.probe();
   // A window checks the exercises in the background (a headless run is what the checks start).
   checks_.reset();
+  symptoms_.reset();
+  if (imgui_ && lab_->board().hasHunts()) symptoms_ = std::make_unique<SymptomWatch>();
   loadPicture();
   if (imgui_ && std::string(variant::kLab) != "00_showcase") {  // (the showcase has no exercises to check)
     // (the exercise folder is the first on the variant's shader path: <exercise_dir>/shaders)
@@ -225,7 +227,7 @@ void LabHost::frame(float dt) {
 void LabHost::hotReload() {
   // A changed file rebuilds its programs; a failed build keeps the last good program.
   if (frameIndex_ % 15 != 0) return;
-  for (auto& p : lab_->programs_) p.reloadIfChanged();
+  for (auto& p : lab_->programs_) reloads_ += p.reloadIfChanged() ? 1 : 0;
   if (checks_) checks_->pollEdits();
   if (lab_->board_.probedFilesChanged()) {
     lab_->board_.probe();
@@ -263,7 +265,7 @@ void LabHost::drawLab() {
   }
 }
 
-MeasureResult LabHost::measureNow(bool report) {
+MeasureResult LabHost::measureFrame() {
   Lab& lab = *lab_;
   const Light& sceneLight = lab.lightShown_ ? lab.light_.light : lab.scene.lights[size_t(lab.lightIndex)];
   const CompareChoice& c = panels_.compare;
@@ -272,9 +274,16 @@ MeasureResult LabHost::measureNow(bool report) {
   if (split) halves = {c.key + "=" + c.a, c.key + "=" + c.b};
   const MeasureResult r = measurement_.measure(
       {target_, lab.scene, lab.alphaCutoff_, lab.light_, sceneLight, halves, sides_, 16 << (2 * lab.lightSamples_)});
+  if (symptoms_) symptoms_->record(r);
+  return r;
+}
+
+MeasureResult LabHost::measureNow(bool report) {
+  Lab& lab = *lab_;
+  const MeasureResult r = measureFrame();
   panels_.measured = r.text;
   lastMeasure_ = r;
-  lab.measured(Presenter::numbersLine(r), split);
+  lab.measured(Presenter::numbersLine(r), panels_.compare.on && !panels_.compare.key.empty());
   if (!report) return r;
   const glm::ivec2 size = target_.size();
   if (imgui_) {

@@ -15,6 +15,7 @@
 #include "common/shell/panels.hpp"
 #include "common/shell/presenter.hpp"
 #include "common/shell/split_screen.hpp"
+#include "common/shell/symptom_watch.hpp"
 #include "common/truth/measurement.hpp"
 
 #include <glm/glm.hpp>
@@ -87,6 +88,7 @@ class LabHost {
   void startPresenter();
   void stepKeys(const std::function<bool(int)>& pressed);
   void applyPresentation();
+  MeasureResult measureFrame();  // this frame against exact visibility (the hunts' symptom line too)
   MeasureResult measureNow(bool report);
   void say(const std::string& text) const;
 
@@ -104,6 +106,8 @@ class LabHost {
   glm::ivec2 pictureSize_{0};
   std::unique_ptr<LiveChecks> checks_;    // the exercises' fast checks, in a window
   std::unique_ptr<Presenter> presenter_;  // the lab's demo.json, if it has one
+  std::unique_ptr<SymptomWatch> symptoms_;  // a window of a lab with bug hunts: their symptom, live
+  int reloads_ = 0;                         // shader programs rebuilt so far (a hunt's edit)
   std::unique_ptr<Lab> lab_;              // declared last: destroyed first
 
   PanelState panels_;

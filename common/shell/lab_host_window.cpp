@@ -142,9 +142,14 @@ void LabHost::presentWindow() {
   panels_.hidePanels = !lab.uiPanels_;
   if (step_ == 0)  // presenting: the picture and its caption, no panels
     drawPanels({lab.board_, checks_.get(), timers_, lab.programs_, lab.warnings_, lab.settings, shown, picture_.id(),
-                pictureSize_, labUi},
+                pictureSize_, labUi, symptoms_ ? &symptoms_->line() : nullptr},
                panels_);
-  if (panels_.measureRequested) panels_.measureRequested = false, measureNow(true);
+  // The hunts' symptom, once the view has held still after a change (not while presenting).
+  const bool due = symptoms_ && step_ == 0 && symptoms_->due(lab.settings, lab.viewProj(), frameSize_, reloads_);
+  if (panels_.measureRequested)
+    panels_.measureRequested = false, measureNow(true);
+  else if (due)
+    measureFrame();
   ImGui::Render();
   {
     auto timer = timers_.scope("panels");

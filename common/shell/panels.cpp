@@ -68,11 +68,12 @@ bool settingsWidgets(const Settings& settings) {
   return changed;
 }
 
-void exerciseRow(const ExerciseStatus& e, const LiveChecks* checks,
-                 const std::map<std::string, CheckVerdict>& verdicts) {
+void exerciseRow(const ExerciseStatus& e, const LiveChecks* checks, const std::map<std::string, CheckVerdict>& verdicts,
+                 const std::string* symptom, bool unfinished) {
   const char* label = "not run yet";
   ImVec4 c = kGrey;
   if (e.state == ExerciseState::Implemented) label = "implemented, not checked", c = kGrey;
+  if (e.hunt && e.state != ExerciseState::Failed) label = "bug hunt", c = kYellow;  // working code, judged by its symptom
   const auto v = verdicts.find(e.id);
   if (e.state == ExerciseState::Implemented && v != verdicts.end() && !(checks && checks->running())) {
     // The fast checks' word, never "done" for an answer that fails them.
@@ -90,8 +91,14 @@ void exerciseRow(const ExerciseStatus& e, const LiveChecks* checks,
   ImGui::TextColored(kGrey, "%s", clipped(e.title, 22).c_str());
   ImGui::EndGroup();
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("%s %s\n%s%s(./workbook check %s runs every test)", e.id.c_str(), e.title.c_str(),
-                      e.message.c_str(), e.message.empty() ? "" : "\n", e.id.substr(0, 2).c_str());
+    ImGui::SetTooltip("%s %s\n%s%s%s(./workbook check %s runs every test)", e.id.c_str(), e.title.c_str(),
+                      e.message.c_str(), e.message.empty() ? "" : "\n",
+                      e.hunt ? "The handout's scene and settings show the symptom; it is measured on this view\n"
+                               "whenever the view, a setting or a shader changes and then holds still.\n"
+                             : "",
+                      e.id.substr(0, 2).c_str());
+  if (e.hunt && symptom) ImGui::TextColored(kGrey, "  %s", symptom->c_str());
+  if (e.hunt && symptom && unfinished) ImGui::TextColored(kGrey, "  (with the unfinished exercises above)");
   const bool checkedRed = label == std::string("wrong") || label == std::string("error");  // (by the checks)
   if (checkedRed && e.state == ExerciseState::Implemented) wrappedRed(v->second.headline);
   if (e.state != ExerciseState::Failed) return;
@@ -119,7 +126,11 @@ void infoPanel(const PanelInput& in, PanelState& state) {
     ImGui::PopTextWrapPos();
   }
   const auto verdicts = in.checks ? in.checks->verdicts() : std::map<std::string, CheckVerdict>{};
-  for (const auto& e : board.exercises()) exerciseRow(e, in.checks, verdicts);
+  // A hunt runs in the whole pipeline: its numbers hold the unfinished exercises' pictures too.
+  const bool unfinished = std::any_of(board.exercises().begin(), board.exercises().end(), [](const ExerciseStatus& e) {
+    return !e.hunt && e.state != ExerciseState::Implemented;
+  });
+  for (const auto& e : board.exercises()) exerciseRow(e, in.checks, verdicts, in.symptom, unfinished);
   ImGui::Separator();
   if (ImGui::Button("Measure")) state.measureRequested = true;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("compare this frame with exact (ray-cast) visibility");

@@ -43,6 +43,7 @@ struct PanelInput {
   GLuint picture = 0;                        ///< the handout's picture of the finished lab (0: none)
   glm::ivec2 pictureSize{0};                 ///< its size in pixels
   std::function<void()> labUi;               ///< the lab's own widgets
+  const std::string* symptom = nullptr;      ///< the hunts' live symptom (SymptomWatch::line()), if any
 };
 
 /// Draws the info panel and the Settings window (inside an ImGui frame).

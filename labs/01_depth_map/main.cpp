@@ -43,7 +43,7 @@ class DepthMapLab : public wb::Lab {
   void update(float dt) override { spun += spin * dt; }
 
   void render() override {
-    const wb::Light light = turned(scene.lights[lightIndex], spun);
+    const wb::Light light = wb::turnedAboutY(scene.lights[lightIndex], spun);
     if (light.type == wb::LightType::Point) {
       warn("lab 01 casts shadows from directional and spot lights; light " + std::to_string(lightIndex) +
            " is a point light (lab 08 covers those)");
@@ -96,13 +96,6 @@ class DepthMapLab : public wb::Lab {
   float spun = 0;                     // degrees turned so far
   bool started = false;               // passes holds a frame's matrices
   std::array<glm::mat4, 2> passes{};  // the shadow pass's and the camera pass's light matrix (01.H1)
-
-  // `light` turned by `degrees` about the vertical axis through the origin.
-  static wb::Light turned(wb::Light light, float degrees) {
-    const glm::mat3 turn(glm::rotate(glm::mat4(1), glm::radians(degrees), glm::vec3(0, 1, 0)));
-    light.position = turn * light.position, light.direction = turn * light.direction;
-    return light;
-  }
 };
 
 }  // namespace
