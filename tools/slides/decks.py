@@ -35,7 +35,9 @@ BENCH_FRAMES = 40  # a measured step's render times this many frames (--bench: 1
 # ![caption](target "title"){attrs}: a caption may hold one level of brackets (links, spans).
 IMAGE_RE = re.compile(r"!\[((?:[^\[\]\\]|\\.|\[[^\]]*\])*)\]\(\s*(<[^>]*>|[^)\s]*)((?:\s+\"[^\"]*\")?)\s*\)")
 REF_IMAGE_RE = re.compile(r"!\[(?:[^\[\]\\]|\\.)*\]\[[^\]]*\]")
-NUMBERS_RE = re.compile(r"\{\{\s*numbers\s*:\s*(\d+)\s*\}\}")
+NUMBERS_RE = re.compile(r"\{\{\s*numbers\s*:\s*(\d+|\d\d\.H\d+)\s*\}\}")
+# ![caption](hunt:NN.Hk): bug hunt NN.Hk's scene, the bug beside the fix (tools/slides/hunts.py).
+HUNT_RE = re.compile(r"^hunt:(\d\d\.H\d+)$")
 NUMBERS_LOOSE_RE = re.compile(r"\{\{\s*num[^}]*\}\}")
 RAW_MEDIA_RE = re.compile(r"<\s*(img|picture|source|video|audio|iframe|embed|object|svg\s[^>]*\bhref)\b", re.I)
 FENCE_RE = re.compile(r"^ {0,3}(`{3,}|~{3,})")
@@ -72,6 +74,7 @@ class Deck:
     uses: list = field(default_factory=list)
     renders: dict = field(default_factory=dict)  # step -> {"png": Path, "json": Path, "record": dict}
     clips: dict = field(default_factory=dict)  # step -> the rendered clip (a WebM file)
+    hunts: dict = field(default_factory=dict)  # "02.H1" -> its exercises.json entry (with "show")
 
 
 
@@ -136,6 +139,20 @@ def scannable_lines(lines: list):
         yield i, INLINE_CODE_RE.sub(lambda mm: " " * len(mm.group(0)), line)
 
 
+def find_hunt(deck: Deck, hid: str) -> bool:
+    """Records bug hunt `hid` of the deck's lab (labs/NN_name/exercises.json) in deck.hunts; False when
+    the lab has no such hunt, or it has no "show" arguments."""
+    try:
+        manifest = json.loads((deck.demo.parent / "exercises.json").read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return False
+    for e in manifest.get("exercises", []):
+        if e.get("id") == hid and e.get("kind") == "hunt" and isinstance(e.get("show"), list):
+            deck.hunts[hid] = e
+            return True
+    return False
+
+
 def scan_deck(deck: Deck) -> list:
     """Finds the figures and numbers of a deck; returns the problems found (deck:line: message)."""
     deck.lines = deck.source.read_text(encoding="utf-8").split("\n")
@@ -166,6 +183,14 @@ def scan_deck(deck: Deck) -> list:
                     continue
                 deck.uses.append(Use("clip", k, no, m.group(1)))
                 continue
+            hm = HUNT_RE.match(target)
+            if hm:
+                if find_hunt(deck, hm.group(1)):
+                    deck.uses.append(Use("figure", hm.group(1), no, m.group(1)))
+                else:
+                    problems.append(f"{where}:{no}: hunt:{hm.group(1)}: {rel(deck.demo.parent)}/exercises.json has "
+                                    "no such hunt with a \"show\" (the arguments that show its symptom)")
+                continue
             if not fm:
                 problems.append(f"{where}:{no}: image '{target}': a deck's only images are demo steps, "
                                 f"written ![caption](step:K) (K = a step of {rel(deck.demo)})")
@@ -185,6 +210,12 @@ def scan_deck(deck: Deck) -> list:
                 problems.append(f"{where}:{no}: '{m.group(0)}' is not a placeholder this build knows: "
                                 "write {{numbers:K}} (K = a step with \"measure\": true)")
         for m in NUMBERS_RE.finditer(text):
+            if ".H" in m.group(1):  # a hunt's numbers: the bug's and the fix's
+                if find_hunt(deck, m.group(1)):
+                    deck.uses.append(Use("numbers", m.group(1), no))
+                else:
+                    problems.append(f"{where}:{no}: {{{{numbers:{m.group(1)}}}}}: no such hunt with a \"show\"")
+                continue
             k = int(m.group(1))
             if not check_step(k, no, f"{{{{numbers:{k}}}}}"):
                 continue

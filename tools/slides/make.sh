@@ -13,6 +13,8 @@ targets=()
 for d in labs/[0-9][0-9]_*/; do
   nn=$(basename "$d" | cut -c1-2)
   [[ -z "$labs" || ",$labs," == *",$nn,"* ]] && targets+=("lab${nn}_solution")
+  # the bug gallery's ![...](hunt:NN.Hk): the solution with the hunts as handed out (cmake/Lab.cmake)
+  [[ -z "$labs" || ",$labs," == *",$nn,"* ]] && grep -q '"kind": "hunt"' "$d/exercises.json" && targets+=("lab${nn}_bugs")
 done
 echo "workbook: building ${targets[*]}"
 QUIET=1 configure_and_build default --target "${targets[@]}"

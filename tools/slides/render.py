@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from decks import *  # noqa: F401,F403  (Deck, BuildError, rel, the patterns)
+from hunts import hunt_numbers_line, render_hunt
 
 
 # The measured numbers a {{numbers:K}} line shows, in this order, when present and not null.
@@ -118,7 +119,9 @@ def frame_cost(rec: Path) -> str:
 def render_steps(deck: Deck, prefix: str, build_dir: Path, out: Path, timeout: float, reuse: bool) -> None:
     rdir = out / "renders" / deck.name
     rdir.mkdir(parents=True, exist_ok=True)
-    wanted = sorted({u.step for u in deck.uses if u.kind != "clip"})
+    for hid in sorted({u.step for u in deck.uses if isinstance(u.step, str)}):  # the bug gallery's
+        deck.renders[hid] = render_hunt(deck, hid, deck.hunts[hid], build_dir, rdir, timeout)
+    wanted = sorted({u.step for u in deck.uses if u.kind != "clip" and isinstance(u.step, int)})
     for k in wanted:
         step = deck.steps[k - 1]
         measure = step.get("measure") is True
@@ -263,13 +266,16 @@ def substituted_markdown(deck: Deck) -> str:
                 spans.append((m.start(), m.end(), f'<figure class="clip"><video src="renders/{deck.name}/{webm.name}" '
                                                   f'autoplay loop muted playsinline title="{html.escape(m.group(1))}">'
                                                   f'</video><figcaption>{html.escape(m.group(1))}</figcaption></figure>'))
-            if fm:
-                k = int(fm.group(1))
+            hm = HUNT_RE.match(m.group(2).strip("<>"))
+            if fm or hm:
+                k = hm.group(1) if hm else int(fm.group(1))
                 png = deck.renders[k]["png"]
                 target = f"renders/{deck.name}/{png.name}"
                 spans.append((m.start(2), m.end(2), target))
         for m in NUMBERS_RE.finditer(text):
-            spans.append((m.start(), m.end(), numbers_line(deck, int(m.group(1)), no)))
+            key = m.group(1)
+            spans.append((m.start(), m.end(), hunt_numbers_line(deck, key, no) if ".H" in key
+                          else numbers_line(deck, int(key), no)))
         for a, b, new in sorted(spans, reverse=True):
             line = line[:a] + new + line[b:]
         lines[no - 1] = line
