@@ -35,7 +35,10 @@ ExerciseBoard::ExerciseBoard(const fs::path& manifest) {
     if (j.contains("picture")) pictureName_ = j.at("picture").get<std::string>();
     if (!pictureName_.empty()) picture_ = manifest.parent_path() / pictureName_;
     for (const auto& e : j.at("exercises"))
-      exercises_.push_back({e.at("id").get<std::string>(), e.at("title").get<std::string>(), {}, {},
+      exercises_.push_back({e.at("id").get<std::string>(),
+                            e.at("title").get<std::string>(),
+                            {},
+                            {},
                             e.value("kind", std::string()) == "hunt"});
   } catch (const std::exception& e) {
     std::fprintf(stderr, "warning: cannot read %s (%s); the exercise list will be empty\n", manifest.string().c_str(),

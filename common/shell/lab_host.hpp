@@ -76,7 +76,7 @@ class LabHost {
 
  private:
   void beginUiFrame();
-  void applyUiScale();  // the panels' text size: ui.scale, or the monitor's
+  void applyUiScale();           // the panels' text size: ui.scale, or the monitor's
   float pixelsPerPoint() const;  // framebuffer pixels per unit of the window's size (2 on a Retina display)
   void handleKeys();
   void upscale(int band, glm::ivec2 shown);  // the frame over the window's scene area (render.scale)
@@ -104,11 +104,11 @@ class LabHost {
   Label label_;      // text burnt into the frame (a shader error at start-up)
   Texture picture_;  // the handout's picture of the finished lab (a window only)
   glm::ivec2 pictureSize_{0};
-  std::unique_ptr<LiveChecks> checks_;    // the exercises' fast checks, in a window
-  std::unique_ptr<Presenter> presenter_;  // the lab's demo.json, if it has one
+  std::unique_ptr<LiveChecks> checks_;      // the exercises' fast checks, in a window
+  std::unique_ptr<Presenter> presenter_;    // the lab's demo.json, if it has one
   std::unique_ptr<SymptomWatch> symptoms_;  // a window of a lab with bug hunts: their symptom, live
   int reloads_ = 0;                         // shader programs rebuilt so far (a hunt's edit)
-  std::unique_ptr<Lab> lab_;              // declared last: destroyed first
+  std::unique_ptr<Lab> lab_;                // declared last: destroyed first
 
   PanelState panels_;
   int step_ = 0;               // the presenter step shown (0: not presenting)

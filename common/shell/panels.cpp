@@ -73,7 +73,8 @@ void exerciseRow(const ExerciseStatus& e, const LiveChecks* checks, const std::m
   const char* label = "not run yet";
   ImVec4 c = kGrey;
   if (e.state == ExerciseState::Implemented) label = "implemented, not checked", c = kGrey;
-  if (e.hunt && e.state != ExerciseState::Failed) label = "bug hunt", c = kYellow;  // working code, judged by its symptom
+  if (e.hunt && e.state != ExerciseState::Failed)
+    label = "bug hunt", c = kYellow;  // working code, judged by its symptom
   const auto v = verdicts.find(e.id);
   if (e.state == ExerciseState::Implemented && v != verdicts.end() && !(checks && checks->running())) {
     // The fast checks' word, never "done" for an answer that fails them.

@@ -50,8 +50,8 @@ void SplitScreen::drawLabels(const CompareChoice& choice, glm::ivec2 size, float
   const std::string left = choice.key + " = " + choice.a, right = choice.key + " = " + choice.b;
   const float rows = float(size.y) / pixelsPerPoint;
   const float most = (rows >= 400 ? rows / 240.0f : 1.0f) * pixelsPerPoint;
-  const float scale = std::min(label_.scaleToFit(left, half - 3 * margin, most),
-                               label_.scaleToFit(right, half - 3 * margin, most));
+  const float scale =
+      std::min(label_.scaleToFit(left, half - 3 * margin, most), label_.scaleToFit(right, half - 3 * margin, most));
   label_.draw(left, {margin, size.y - int(13 * scale)}, size, scale);
   label_.draw(right, {half + margin, size.y - int(13 * scale)}, size, scale);
 }

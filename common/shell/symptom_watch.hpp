@@ -28,9 +28,9 @@ class SymptomWatch {
   const std::string& line() const { return line_; }
 
  private:
-  std::string shown_;     // the signature of the frame last measured
-  std::string pending_;   // the signature of the frames seen since the last change
-  int still_ = 0;         // frames pending_ has been seen
+  std::string shown_;    // the signature of the frame last measured
+  std::string pending_;  // the signature of the frames seen since the last change
+  int still_ = 0;        // frames pending_ has been seen
   std::string line_ = "measuring when the view is still...";
 };
 

@@ -319,6 +319,30 @@ TEST(Lab08, Ex08_5_MeasuredSeamsNoWorseThanTheRest) {
 TEST(Lab08, Ex08_H1_MeasuredTheWholeYardIsLit) {
   wb::test::expectSymptomGone("08.H1", "hunt_yard", wb::test::labArgs({}, "cube_yard.json"), {1.0, 1.0});
 }
+// The hunt's function alone, on a yard four times as wide as the scene's: a bulb 1 m above a 120 m
+// yard that casts nothing, a crate beside the bulb that does. The far plane must reach the yard's
+// farthest corner (worked out here from the corners), and not be more than twice that: beyond, the
+// stored distances lose precision for nothing. A far plane that only has a floor (of 10 or 20 m,
+// which holds the 30 m scene) fails here.
+TEST(Lab08, Ex08_H1_TheFarPlaneReachesTheFarthestReceiver) {
+  std::vector<wb::SceneObject> objects(2);
+  objects[0].name = "yard", objects[0].mesh = wb::makePlane(120, 120), objects[0].castsShadow = false;
+  objects[1].name = "crate", objects[1].mesh = wb::makeBox(glm::vec3(0.3f));
+  objects[1].model = glm::translate(glm::mat4(1), glm::vec3(1.5f, 0.3f, 0));
+  const glm::vec3 bulb(0, 1, 0);
+  const float farthest = glm::length(glm::vec3(60, 0, 60) - bulb);  // every corner is as far
+  glm::vec2 nearFar(0);
+  WB_TRY_EXERCISE(nearFar = WB_CALL(lab08::cubeNearFar(objects, bulb)));
+  ASSERT_GE(nearFar.y, farthest) << std::setprecision(4)
+                                 << "WRONG: a bulb 1 m above the middle of a 120 m yard that casts nothing, a crate "
+                                 << "beside it: far is " << nearFar.y << " m, but the yard's corners are " << farthest
+                                 << " m away, and the lookup is asked about them";
+  EXPECT_LE(nearFar.y, 2 * farthest) << std::setprecision(4) << "WRONG: far is " << nearFar.y
+                                     << " m, more than twice the farthest point (" << farthest
+                                     << " m): the stored distances lose precision for nothing";
+  EXPECT_GT(nearFar.x, 0) << "WRONG: near must be above 0, got " << nearFar.x;
+  EXPECT_LT(nearFar.x, 0.5f) << "WRONG: near is " << nearFar.x << " m, but the crate is 1.2 m from the bulb";
+}
 TEST(Lab08, Ex08_H1_SceneYardLowAndLong) {
   wb::test::expectSceneMatchesGolden("08.H1", "hunt_yard_low",
                                      wb::test::labArgs({"camera.bookmark=3"}, "cube_yard.json"), kTol, kMaxFraction);

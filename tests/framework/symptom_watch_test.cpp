@@ -1,8 +1,8 @@
 // A hunt's symptom in the window is measured once the view holds still after a change (the view,
 // a setting, a shader reload), once per change, and never while the view keeps moving: each
 // measurement costs a frame's ray casting.
-#include "common/base/settings.hpp"
 #include "common/shell/symptom_watch.hpp"
+#include "common/base/settings.hpp"
 #include "common/truth/measurement.hpp"
 
 #include <gtest/gtest.h>
