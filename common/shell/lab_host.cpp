@@ -172,7 +172,8 @@ void LabHost::host(std::unique_ptr<Lab> lab) {
   symptoms_.reset();
   if (imgui_ && lab_->board().hasHunts()) symptoms_ = std::make_unique<SymptomWatch>();
   loadPicture();
-  if (imgui_ && std::string(variant::kLab) != "00_showcase") {  // (the showcase has no exercises to check)
+  // (the showcase has no exercises to check, and the bug gallery's build is a lecturer's demo)
+  if (imgui_ && std::string(variant::kLab) != "00_showcase" && std::string(variant::kName) != "bugs") {
     // (the exercise folder is the first on the variant's shader path: <exercise_dir>/shaders)
     const std::string shaders =
         std::string(variant::kShaderPath).substr(0, std::string(variant::kShaderPath).find(';'));
