@@ -43,8 +43,8 @@ def _side_by_side(bug: Path, fix: Path, out: Path, work: Path) -> None:
         f = work / f"{name}.label.txt"
         f.write_text(text, encoding="utf-8")  # (a file: no escaping of drawtext's own syntax)
         font = f"fontfile={FONT}:" if FONT.is_file() else ""
-        labels.append(f"drawtext={font}textfile={f}:fontsize=26:fontcolor=white:box=1:boxcolor=black@0.6:"
-                      "boxborderw=8:x=14:y=14")
+        labels.append(f"drawtext={font}textfile={f}:fontsize=40:fontcolor=white:box=1:boxcolor=black@0.6:"
+                      "boxborderw=10:x=16:y=16")
     graph = f"[0:v]{labels[0]}[a];[1:v]{labels[1]}[b];[a][b]hstack=inputs=2"
     proc = subprocess.run([ffmpeg, "-v", "error", "-y", "-i", str(bug), "-i", str(fix), "-filter_complex", graph,
                            "-frames:v", "1", str(out)], capture_output=True, text=True)
