@@ -236,7 +236,7 @@ endfunction()
 
 # The bug gallery's build of a lab with hunts (labNN_bugs, built only when asked: the bug_gallery
 # target): the reference solution with every hunt's chunk as the student edition hands it out, so
-# the bug runs among correct exercises. tools/slides/bug_gallery.py renders it beside the solution.
+# the bug runs among correct exercises. tools/slides/hunts.py renders it beside the solution.
 function(_wb_bugs_variant lab nn json count)
   set(hunts "")
   math(EXPR last "${count} - 1")

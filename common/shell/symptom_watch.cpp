@@ -3,8 +3,6 @@
 #include "common/base/strf.hpp"
 #include "common/truth/measurement.hpp"
 
-#include <cstring>
-
 namespace wb {
 namespace {
 

@@ -232,8 +232,7 @@ def main(argv=None) -> int:
                                 "png": png.relative_to(out).as_posix(), "sha256": sha256(png),
                                 "width": w, "height": h,
                                 "record": deck.renders[u.step]["json"].relative_to(out).as_posix()})
-            numbers = [{"step": u.step, "line": u.line,
-                        "text": (hunt_numbers_line if isinstance(u.step, str) else numbers_line)(deck, u.step, u.line)}
+            numbers = [{"step": u.step, "line": u.line, "text": numbers_line(deck, u.step, u.line)}
                        for u in deck.uses if u.kind == "numbers"]
             entry = {"lab": deck.lab, "name": deck.name, "title": html_title(html_path, deck.name),
                      "source": rel(deck.source), "demo": rel(deck.demo), "html": html_path.name,

@@ -12,9 +12,10 @@ for nn in "$@"; do lab_name "$nn" >/dev/null; labs+="${labs:+,}$nn"; done
 targets=()
 for d in labs/[0-9][0-9]_*/; do
   nn=$(basename "$d" | cut -c1-2)
-  [[ -z "$labs" || ",$labs," == *",$nn,"* ]] && targets+=("lab${nn}_solution")
+  [[ -z "$labs" || ",$labs," == *",$nn,"* ]] || continue
+  targets+=("lab${nn}_solution")
   # the bug gallery's ![...](hunt:NN.Hk): the solution with the hunts as handed out (cmake/Lab.cmake)
-  [[ -z "$labs" || ",$labs," == *",$nn,"* ]] && grep -q '"kind": "hunt"' "$d/exercises.json" && targets+=("lab${nn}_bugs")
+  if grep -q '"kind": "hunt"' "$d/exercises.json"; then targets+=("lab${nn}_bugs"); fi
 done
 echo "workbook: building ${targets[*]}"
 QUIET=1 configure_and_build default --target "${targets[@]}"

@@ -224,7 +224,9 @@ def format_number(value: float) -> str:
     return f"{value:.0f}"
 
 
-def numbers_line(deck: Deck, k: int, line: int) -> str:
+def numbers_line(deck: Deck, k, line: int) -> str:
+    if isinstance(k, str):  # a bug hunt ("02.H1"): the bug's numbers and the fix's
+        return hunt_numbers_line(deck, k, line)
     record = deck.renders[k]["record"]
     m = record.get("measurement") if isinstance(record, dict) else None
     where = f"{rel(deck.source)}:{line}: {{{{numbers:{k}}}}}"
@@ -274,8 +276,7 @@ def substituted_markdown(deck: Deck) -> str:
                 spans.append((m.start(2), m.end(2), target))
         for m in NUMBERS_RE.finditer(text):
             key = m.group(1)
-            spans.append((m.start(), m.end(), hunt_numbers_line(deck, key, no) if ".H" in key
-                          else numbers_line(deck, int(key), no)))
+            spans.append((m.start(), m.end(), numbers_line(deck, key if ".H" in key else int(key), no)))
         for a, b, new in sorted(spans, reverse=True):
             line = line[:a] + new + line[b:]
         lines[no - 1] = line
