@@ -219,6 +219,15 @@ Scene Scene::load(const fs::path& file) {
   return scene;
 }
 
+std::pair<glm::vec3, glm::vec3> worldBounds(const SceneObject& object) {
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (const glm::vec3& p : object.mesh.weldedPositions) {
+    const glm::vec3 w(object.model * glm::vec4(p, 1));
+    lo = glm::min(lo, w), hi = glm::max(hi, w);
+  }
+  return {lo, hi};
+}
+
 Light turnedAboutY(Light light, float degrees) {
   const glm::mat3 turn(glm::rotate(glm::mat4(1), glm::radians(degrees), glm::vec3(0, 1, 0)));
   light.position = turn * light.position, light.direction = turn * light.direction;
@@ -285,11 +294,17 @@ void GpuScene::drawCasters(const Program& program, int unit, int instances) cons
   drawItems(program, unit, instances, true);
 }
 
-void GpuScene::drawItems(const Program& program, int unit, int instances, bool castersOnly) const {
+void GpuScene::drawCasters(const Program& program, const std::vector<bool>& only) const {
+  drawItems(program, kAlbedoUnit, 1, true, &only);
+}
+
+void GpuScene::drawItems(const Program& program, int unit, int instances, bool castersOnly,
+                         const std::vector<bool>* only) const {
   program.use();
   program.set("u_albedo", unit);
-  for (const auto& it : items_) {
-    if (castersOnly && !it.casts) continue;
+  for (size_t k = 0; k < items_.size(); ++k) {
+    const Item& it = items_[k];
+    if ((castersOnly && !it.casts) || (only && (k >= only->size() || !(*only)[k]))) continue;
     program.set("u_model", it.model);
     program.set("u_color", it.color);
     program.set("u_hasTexture", it.textured ? 1 : 0);

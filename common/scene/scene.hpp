@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace wb {
@@ -81,6 +82,10 @@ struct Scene {
 /// its direction; a turning sun, the lights' orbit setting).
 Light turnedAboutY(Light light, float degrees);
 
+/// The object's axis-aligned bounds in world space (first: the smallest x, y, z; second: the
+/// largest), from its welded positions through its model matrix.
+std::pair<glm::vec3, glm::vec3> worldBounds(const SceneObject& object);
+
 /// Perturbs `scene` deterministically from `seed` (grading-time variations, so a render cannot be
 /// copied from published data): every light turns by 1 to 3 degrees (spot and point lights also
 /// move by up to 2% of the scene's size) and every camera bookmark turns by up to 3 degrees.
@@ -99,6 +104,9 @@ class GpuScene {
   void draw(const Program& program, int textureUnit = kAlbedoUnit, int instances = 1) const;
   /// draw(), but only the objects that cast shadows (SceneObject::castsShadow): the shadow passes.
   void drawCasters(const Program& program, int textureUnit = kAlbedoUnit, int instances = 1) const;
+  /// drawCasters(), but only object i where `only[i]` is true (a missing entry is false): lab 10's
+  /// per-cascade caster culling.
+  void drawCasters(const Program& program, const std::vector<bool>& only) const;
   static constexpr int kAlbedoUnit = 15;  ///< GL 4.1 guarantees 16 texture units per stage
 
   /// Number of objects; object i is objects[i] of the Scene this was built from.
@@ -119,7 +127,8 @@ class GpuScene {
   void drawObjectWelded(size_t object, const Program& program, bool depthClamp = false) const;
 
  private:
-  void drawItems(const Program& program, int unit, int instances, bool castersOnly) const;
+  void drawItems(const Program& program, int unit, int instances, bool castersOnly,
+                 const std::vector<bool>* only = nullptr) const;
   struct Item {
     Mesh mesh;
     glm::mat4 model;

@@ -172,12 +172,16 @@ void Lab::renderShadowMap(const Program& depthProgram, const CubeShadowMap& map,
 }
 
 void Lab::renderShadowMap(const Program& depthProgram, const ShadowMapArray& map, const Light& light,
-                          const std::vector<glm::mat4>& layerViewProj) {
+                          const std::vector<glm::mat4>& layerViewProj,
+                          const std::vector<std::vector<bool>>* layerCasters) {
   depthProgram.set("u_alphaCutoff", alphaCutoff_);
   for (int layer = 0; layer < map.layers() && layer < int(layerViewProj.size()); ++layer) {
     map.begin(layer);
     depthProgram.set("u_lightViewProj", layerViewProj[size_t(layer)]);
-    gpuScene->drawCasters(depthProgram);
+    if (layerCasters && size_t(layer) < layerCasters->size())
+      gpuScene->drawCasters(depthProgram, (*layerCasters)[size_t(layer)]);
+    else
+      gpuScene->drawCasters(depthProgram);
   }
   showLight(map.describe(light, layerViewProj));
 }

@@ -114,9 +114,11 @@ class Lab {
   /// u_lightViewProj; set the rest first). Shows the cube in the debug views.
   void renderShadowMap(const Program& depthProgram, const CubeShadowMap& map, const Light& light,
                        const std::vector<glm::mat4>& faceViewProj, bool linearDistance);
-  /// PASS 1 for cascades: layer k of `map` through `layerViewProj[k]`. Shows every layer.
+  /// PASS 1 for cascades: layer k of `map` through `layerViewProj[k]`. Shows every layer. With
+  /// `layerCasters`, layer k draws only the casters object i of which `(*layerCasters)[k][i]` is true.
   void renderShadowMap(const Program& depthProgram, const ShadowMapArray& map, const Light& light,
-                       const std::vector<glm::mat4>& layerViewProj);
+                       const std::vector<glm::mat4>& layerViewProj,
+                       const std::vector<std::vector<bool>>* layerCasters = nullptr);
   /// PASS 1 of the filterable techniques (ESM, VSM, EVSM): clears `map` to `far` (the stored value
   /// of depth 1), draws the scene with `writer` (u_lightViewProj and u_alphaCutoff set; set the
   /// rest first), prefilters it with `blur`, and shows `light` in the debug views. Times "shadow"

@@ -52,7 +52,7 @@ class VolumeLab : public wb::Lab {
       warn(std::to_string(leafy) +
            " alpha-tested object(s) cast no shadow volume: a volume follows triangles, and "
            "their leaves are holes in the texture, not in the triangles");
-    for (const auto& o : scene.objects) bounds.push_back(worldBounds(o));  // the scene does not move
+    for (const auto& o : scene.objects) bounds.push_back(wb::worldBounds(o));  // the scene does not move
     for (size_t k = 0; k < scene.objects.size(); ++k) {
       const wb::SceneObject& o = scene.objects[k];
       if (!o.castsVolume) continue;
@@ -217,15 +217,6 @@ class VolumeLab : public wb::Lab {
       q[c] = glm::vec3(w) / w.w;
     }
     return q;
-  }
-
-  static std::pair<glm::vec3, glm::vec3> worldBounds(const wb::SceneObject& o) {
-    glm::vec3 lo(1e30f), hi(-1e30f);
-    for (const glm::vec3& p : o.mesh.weldedPositions) {
-      const glm::vec3 w(o.model * glm::vec4(p, 1));
-      lo = glm::min(lo, w), hi = glm::max(hi, w);
-    }
-    return {lo, hi};
   }
 
   // Debug views, over the lit frame: the stencil count as colours, the volumes translucent, the

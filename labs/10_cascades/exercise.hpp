@@ -4,6 +4,8 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace lab10 {
@@ -40,5 +42,15 @@ glm::mat4 fitCascade(const glm::mat4& lightView, const std::array<glm::vec3, 8>&
 /// front of the centre (towards the light) to r behind it.
 glm::mat4 stableCascade(const glm::mat4& lightView, const std::array<glm::vec3, 8>& corners, int mapSize,
                         float casterReach);
+
+/// An object's bounds in world space: (the smallest x, y, z; the largest).
+using Box = std::pair<glm::vec3, glm::vec3>;
+
+/// EXERCISE 10.H2 (a bug hunt: working code with a real bug in it; README.md): per-cascade caster
+/// culling (csm.cull=on). The indices of the `boxes` (every object's world bounds) to draw into one
+/// cascade's map: `cascade` is its light matrix (10.3 or 10.4), `view` the camera's view matrix, and
+/// [sliceNear, sliceFar] the view distances of the slice it covers (10.1).
+std::vector<uint32_t> castersFor(const glm::mat4& cascade, const glm::mat4& view, float sliceNear, float sliceFar,
+                                 const std::vector<Box>& boxes);
 
 }  // namespace lab10

@@ -65,4 +65,26 @@ glm::mat4 stableCascade(const glm::mat4& lightView, const std::array<glm::vec3, 
          lightView;
 }
 
+// EXERCISE 10.H2: bug hunt (the fix). An object can shadow the cascade's box exactly when its box
+// lies on the cascade's map: its corners' x and y in the cascade's clip space overlap [-1, 1], and
+// not all of it is beyond the far plane. Where it lies along the camera's view does not matter: a
+// low sun throws a shadow far beyond its caster's slice, from behind the camera too.
+std::vector<uint32_t> castersFor(const glm::mat4& cascade, [[maybe_unused]] const glm::mat4& view,
+                                 [[maybe_unused]] float sliceNear, [[maybe_unused]] float sliceFar,
+                                 const std::vector<Box>& boxes) {
+  std::vector<uint32_t> kept;
+  for (size_t k = 0; k < boxes.size(); ++k) {
+    glm::vec3 lo(1e30f), hi(-1e30f);  // the box in the cascade's clip space
+    for (int c = 0; c < 8; ++c) {
+      const glm::vec4 corner(c & 1 ? boxes[k].second.x : boxes[k].first.x, c & 2 ? boxes[k].second.y : boxes[k].first.y,
+                             c & 4 ? boxes[k].second.z : boxes[k].first.z, 1);
+      const glm::vec3 p(cascade * corner);  // (orthographic: w stays 1)
+      lo = glm::min(lo, p), hi = glm::max(hi, p);
+    }
+    const bool onMap = lo.x <= 1 && hi.x >= -1 && lo.y <= 1 && hi.y >= -1 && lo.z <= 1;
+    if (onMap) kept.push_back(uint32_t(k));
+  }
+  return kept;
+}
+
 }  // namespace lab10
