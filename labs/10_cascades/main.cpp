@@ -1,7 +1,8 @@
 // Lab 10: cascaded shadow maps
 // ---------------------------------------------------------------------------------------------
 // Difficulty: 4/5. Handout: README.md beside this file.
-// Exercises:  10.1 - 10.4 in exercise.cpp; 10.5 and 10.6 in shaders/exercise.glsl.
+// Exercises:  10.1 - 10.4 and the bug hunt 10.H2 in exercise.cpp; 10.5, 10.6 and the bug hunt 10.H1 in
+//             shaders/exercise.glsl.
 // Controls:   drag to orbit, wheel to zoom, 1-9 camera bookmarks, F12 screenshot.
 // One map over a 200 m field spends its texels evenly, so the bench at your feet gets as few as the
 // trees on the horizon. Cascades cut the view into slices, near ones short and far ones long, and give

@@ -5,6 +5,7 @@
 // these tests, makes them from the judge's plan. Points and visibility: hidden.json beside this file.
 #include "exercise.hpp"
 #include "tests/harness/harness.hpp"
+#include "tests/harness/hunt.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -140,10 +141,11 @@ TEST(Hidden10, Ex10_5_SceneOrchardByMap) {
 }
 
 // 10.H2 on the orchard: csm.cull=on must change no pixel of it. From its first bookmark the bug drops
-// the casters outside each slice whose shadows fall in it (leak 24.45% against the reference's 3.54%:
-// ./workbook run 10 --headless --size 480x270 --scene tests/hidden/10_cascades/scenes/heldout.json
-// --set csm.cull=on --metrics).
-TEST(Hidden10, Ex10_H2_SceneOrchardCulled) {
-  wb::test::expectSceneMatchesGolden("10.H2", "hidden/heldout_culled",
-                                     wb::test::labArgs({"csm.cull=on"}, "hidden/heldout.json"), 0.1f, 0.01);
+// the casters outside each slice whose shadows fall in it: it leaks 24.45% of the truly shadowed
+// pixels, the reference 3.54% (./workbook run 10 --headless --size 480x270 --scene
+// tests/hidden/10_cascades/scenes/heldout.json --set csm.cull=on --metrics). (A picture test passes
+// the bug here: the missing shadows are 0.6% of a 256x256 frame's pixels.)
+TEST(Hidden10, Ex10_H2_MeasuredOrchardCulled) {
+  wb::test::expectSymptomGone("10.H2", "heldout_culled", wb::test::labArgs({"csm.cull=on"}, "hidden/heldout.json"),
+                              {0.5, 5.0});
 }
