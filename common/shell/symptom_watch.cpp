@@ -33,6 +33,10 @@ bool SymptomWatch::due(const Settings& settings, const glm::mat4& viewProj, glm:
 }
 
 void SymptomWatch::record(const MeasureResult& r) {
+  if (r.todoPixels > 0) {  // a stub's pattern is on screen: acne and leak would count it as shadow
+    line_ = "now: not measured (the frame shows the not-implemented pattern)";
+    return;
+  }
   line_ = strf("now: acne %.2f%%, leak %.2f%% (this view)", 100 * r.metrics.acneRate(), 100 * r.metrics.leakRate());
   if (!r.halves.empty()) line_ += " (both halves)";
 }

@@ -27,6 +27,7 @@ struct MeasureResult {
   std::vector<PenumbraSlab> penumbra;  ///< the scene's penumbra probe, if it has one and the light a size
   SeamError seams;                     ///< a cube map's seams against the rest (pixels = 0 for other maps)
   std::string notes;                   ///< why a measurement was skipped, if one was
+  long todoPixels = 0;                 ///< pixels showing a stub's WB_TODO: the numbers mean nothing yet
   /// One half of a split-screen frame, measured on its own.
   struct Half {
     std::string setting;            ///< "key=value" that half shows

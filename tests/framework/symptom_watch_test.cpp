@@ -3,6 +3,7 @@
 // measurement costs a frame's ray casting.
 #include "common/shell/symptom_watch.hpp"
 #include "common/base/settings.hpp"
+#include "common/shell/presenter.hpp"
 #include "common/truth/measurement.hpp"
 
 #include <gtest/gtest.h>
@@ -69,6 +70,18 @@ TEST(SymptomWatch, TheLineGivesTheMeasuredAcneAndLeak) {
   r.metrics.shadowedPixels = 200, r.metrics.leakPixels = 50;
   watch.record(r);
   EXPECT_EQ(watch.line(), "now: acne 0.50%, leak 25.00% (this view)");
+}
+
+// A frame that shows a stub's pattern (WB_TODO) has no acne or leak to give: counting the pattern as
+// shadow made the student edition's line read "acne 100.00%".
+TEST(SymptomWatch, AFrameWithAStubSaysNotMeasured) {
+  wb::SymptomWatch watch;
+  wb::MeasureResult r;
+  r.metrics.litPixels = 1000, r.metrics.acnePixels = 1000;
+  r.todoPixels = 3;
+  watch.record(r);
+  EXPECT_EQ(watch.line(), "now: not measured (the frame shows the not-implemented pattern)");
+  EXPECT_EQ(wb::Presenter::numbersLine(r), "not measured: an exercise this frame needs is unfinished");
 }
 
 }  // namespace

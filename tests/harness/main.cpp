@@ -130,9 +130,12 @@ class CheckListener : public ::testing::EmptyTestEventListener {
       signed_.insert(test_);
       std::ofstream(signatures_, std::ios::app) << nlohmann::json{{"test", test_}, {"value", *d.got}}.dump() << "\n";
     }
-    // Keep the most serious diagnosis of the exercise: ERROR > WRONG > NOT IMPLEMENTED.
+    // Keep the most serious diagnosis of the exercise: ERROR > WRONG > blocked > NOT IMPLEMENTED. A test
+    // of its own that finds it WRONG says more than a scene blocked by another exercise, and is what
+    // the grader, drawing the others with the reference, finds too.
     auto rank = [](const wb::test::Diagnosis& x) {
-      return x.verdict == "ERROR" ? 3 : x.verdict == "NOT IMPLEMENTED" ? 1 : 2;
+      if (x.headline.rfind("ERROR: blocked by", 0) == 0) return 1.5;
+      return x.verdict == "ERROR" ? 3.0 : x.verdict == "NOT IMPLEMENTED" ? 1.0 : 2.0;
     };
     // (The grader's convention: a test that draws a scene has Scene or Measured in its name.)
     static const std::regex blockedRe(R"(^ERROR: blocked by ([0-9.xH, ]+):)"), kListSeparator(", ");
