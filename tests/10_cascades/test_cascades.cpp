@@ -444,10 +444,11 @@ TEST(Lab10, Ex10_H2_KeepsEveryBoxOverTheMapAndNoOther) {
 // csm.cull=on must change no pixel: the reference draws the same frame with it on and off. From
 // bookmark 3 (./workbook run 10 --headless --size 480x270 --set camera.bookmark=3 --set csm.cull=on
 // --metrics) it leaks 11.33%; the bug, which drops the casters outside each cascade's slice whose
-// shadows fall in it, 25.69%.
+// shadows fall in it, 25.69%. The grader turns the scene a little (--vary SEED): over seeds 0-3, 5, 7,
+// 9, 14, 16 and 4294967295 the reference leaks 10.86-13.73%, the bug 23.17-30.66%; acne 0.20-0.27%.
 TEST(Lab10, Ex10_H2_MeasuredOverTheSplitsWithCulling) {
   wb::test::expectSymptomGone("10.H2", "hunt_cull_splits", wb::test::labArgs({"csm.cull=on", "camera.bookmark=3"}),
-                              {0.6, 13.0});
+                              {0.6, 17.0});
 }
 // The sun turned 90 degrees (light.orbit=90): from the bench, the reference leaks 8.28%, the bug 56.74%.
 TEST(Lab10, Ex10_H2_SceneCullingUnderAnotherSun) {

@@ -143,9 +143,10 @@ TEST(Hidden10, Ex10_5_SceneOrchardByMap) {
 // 10.H2 on the orchard: csm.cull=on must change no pixel of it. From its first bookmark the bug drops
 // the casters outside each slice whose shadows fall in it: it leaks 24.45% of the truly shadowed
 // pixels, the reference 3.54% (./workbook run 10 --headless --size 480x270 --scene
-// tests/hidden/10_cascades/scenes/heldout.json --set csm.cull=on --metrics). (A picture test passes
-// the bug here: the missing shadows are 0.6% of a 256x256 frame's pixels.)
+// tests/hidden/10_cascades/scenes/heldout.json --set csm.cull=on --metrics); over the grading seeds
+// of test_cascades.cpp's 10.H2 test, 2.49-4.82% and 18.33-32.19%. (A picture test passes the bug
+// here: the missing shadows are 0.6% of a 256x256 frame's pixels.)
 TEST(Hidden10, Ex10_H2_MeasuredOrchardCulled) {
   wb::test::expectSymptomGone("10.H2", "heldout_culled", wb::test::labArgs({"csm.cull=on"}, "hidden/heldout.json"),
-                              {0.5, 5.0});
+                              {0.5, 9.0});
 }
