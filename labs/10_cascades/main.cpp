@@ -256,6 +256,7 @@ class CascadeLab : public wb::Lab {
     if (showDensity) defines += "#define WB_DENSITY\n";
     if (showCascades) defines += "#define WB_TINT\n";
     if (region) defines += "#define WB_REGION\n";
+    if (kernel == 0) defines += "#define WB_ONE_TAP\n";
     const char* entries[] = {"scene.frag", "scene_esm.frag", "scene_vsm.frag", "scene_evsm.frag"};
     wb::Program*& p = scenePrograms[defines + entries[filter]];
     if (!p) p = &loadProgram({{GL_VERTEX_SHADER, "cascades.vert"}, {GL_FRAGMENT_SHADER, entries[filter]}}, defines);

@@ -2,7 +2,8 @@
 // (10.5), looks it up (2x2 PCF, or lab 04's ESM, 05's VSM or 06's EVSM), and in the band before a
 // split blends with the next cascade (10.6). llvmpipe runs both sides of every branch, even
 // one whose condition is a uniform, so the debug views and options are compiled in by #define
-// (WB_SELECT_MAP, WB_SMOOTH_BLEND, WB_DENSITY, WB_TINT, WB_REGION) instead of switched by uniforms.
+// (WB_SELECT_MAP, WB_SMOOTH_BLEND, WB_DENSITY, WB_TINT, WB_REGION, WB_ONE_TAP) instead of switched by
+// uniforms.
 #include "exercise.glsl"
 #include "wb/lighting.glsl"
 #include "wb/outputs.glsl"
@@ -57,7 +58,12 @@ float lookup(int i) {
 // or 1 outside its map.
 float lookup(int i) {
   if (!inMap(i)) return 1.0;
-  return cascadePcf(u_compare, v_light[i] * 0.5 + 0.5, i, u_bias, u_kernel, u_tapWorld, u_uvPerWorld);
+  vec3 p = v_light[i] * 0.5 + 0.5;
+#ifdef WB_ONE_TAP  // csm.kernel=1: cascadePcf's one tap, without its loop (a fifth of the pass on llvmpipe)
+  return texture(u_compare, vec4(p.xy, float(i), p.z - u_bias));
+#else
+  return cascadePcf(u_compare, p, i, u_bias, u_kernel, u_tapWorld, u_uvPerWorld);
+#endif
 }
 #endif
 
