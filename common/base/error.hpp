@@ -28,4 +28,8 @@ struct NotImplemented : Error {
   explicit NotImplemented(const std::string& what) : Error("NOT IMPLEMENTED: exercise " + what) {}
 };
 
+/// True if `v` is the GLSL stubs' sentinel WB_TODO (shaders/wb/exercise.glsl), their way of saying
+/// "not implemented" in a value: a probe's result, or a pixel of the visibility a frame wrote.
+inline bool isTodo(float v) { return v <= -1e29f; }
+
 }  // namespace wb

@@ -2,6 +2,7 @@
 /// Runs GLSL functions on synthetic inputs in a vertex shader with transform feedback, and assembles exercise files so
 /// an exercise can be run with the solution versions of the others. Tests and the lab's status panel both use it.
 #pragma once
+#include "common/base/error.hpp"                // isTodo()
 #include "common/exercise/exercise_chunks.hpp"  // findMarker()
 #include "common/platform/gl.hpp"
 
@@ -91,8 +92,6 @@ std::vector<glm::vec4> runGlslKernelWithSamplers(const std::string& functions, c
                                                  const std::vector<glm::vec4>& inputs,
                                                  const std::vector<KernelTexture>& textures);
 
-/// True if `v` is the GLSL stubs' sentinel WB_TODO (see shaders/wb/exercise.glsl).
-inline bool isTodo(float v) { return v <= -1e29f; }
 /// True if any component of any result is WB_TODO.
 inline bool anyTodo(const std::vector<glm::vec4>& results) {
   for (const auto& r : results)
