@@ -7,10 +7,33 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <set>
 
 namespace fs = std::filesystem;
 
 namespace wb {
+namespace {
+
+// Whether exercise file `text` compiles in a kernel (one that calls none of its functions).
+bool kernelCompiles(const std::string& text, const fs::path& origin, const std::vector<GLuint>& textures) {
+  try {
+    runGlslKernel(text, origin, "", 0, 1, {}, textures);
+    return true;
+  } catch (const Error&) {
+    return false;
+  }
+}
+
+// The lab's shaders/`file` as handed out, or "" (then nothing is swapped).
+std::string handedOutText(const std::string& file) {
+  try {
+    return readFile(handedOutShaderFile(file));
+  } catch (const Error&) {
+    return "";
+  }
+}
+
+}  // namespace
 
 const char* stateName(ExerciseState state) {
   switch (state) {
@@ -98,7 +121,8 @@ void ExerciseBoard::probe() {
       const fs::path path = findShaderFile(file, shaderSearchPath());
       probedFiles_[path] = fs::last_write_time(path);
       const std::string text = readFile(path);
-      std::string broken, error;             // the exercise whose chunk does not compile, and why
+      std::set<std::string> broken;          // the exercises whose chunks do not compile
+      std::string error;                     // and why
       const int count = int(probes.size());  // (a lambda may not name a structured binding before C++20)
       auto run = [&](const std::string& t) {
         return runGlslKernel(t, path, body, count, 1, {}, {dummy.id(), cube.id()});
@@ -108,15 +132,20 @@ void ExerciseBoard::probe() {
         r = run(text);
         lastGood_[path] = text;
       } catch (const Error& e) {
-        // One exercise's chunk that does not compile is that exercise's error alone: the others are
-        // probed with its last good chunk in its place, as hot reload draws them (shader.hpp).
-        broken = glslErrorOwner(e.what()), error = e.what();
-        if (broken.empty() || !lastGood_.count(path)) throw;
-        r = run(withChunksFrom(text, lastGood_[path], {broken}));
+        // A chunk that does not compile is its exercise's error alone: found by compiling each chunk
+        // alone (never from the log), the others are probed with its last good text in its place,
+        // as hot reload draws them (shader.hpp), or with the stub's before anything compiled.
+        const std::string fallback = lastGood_.count(path) ? lastGood_[path] : handedOutText(file);
+        broken = chunksThatDoNotCompile(text, fallback, [&](const std::string& t) {
+          return kernelCompiles(t, path, {dummy.id(), cube.id()});
+        });
+        if (broken.empty()) throw;
+        error = e.what();
+        r = run(withChunksFrom(text, fallback, broken));
       }
       for (size_t k = 0; k < probes.size(); ++k)
-        if (probes[k]->id == broken)
-          set(broken, ExerciseState::Failed, error);
+        if (broken.count(probes[k]->id))
+          set(probes[k]->id, ExerciseState::Failed, error);
         else
           set(probes[k]->id, isTodo(r[k].x) ? ExerciseState::NotImplemented : ExerciseState::Implemented,
               isTodo(r[k].x) ? "the GLSL function still returns WB_TODO" : "");

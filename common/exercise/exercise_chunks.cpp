@@ -96,4 +96,55 @@ std::string withChunksFrom(const std::string& current, const std::string& lastGo
   return out;
 }
 
+std::set<std::string> chunksThatDoNotCompile(const std::string& mine, const std::string& stub,
+                                             const CompilesFn& compiles) {
+  // The exercise chunks the stub has too (only those can be swapped), by ids of an exercise's shape:
+  // "// EXERCISE 08.x" quoted in a comment above the first marker is no exercise.
+  auto isId = [](const std::string& id) { return !id.empty() && id.find_first_not_of("0123456789.xH") == id.npos; };
+  std::set<std::string> ids;
+  for (const auto& chunk : splitChunks(mine))
+    if (isId(chunk.first) && findMarker(stub, chunk.first) != std::string::npos) ids.insert(chunk.first);
+  std::set<std::string> broken;
+  for (const auto& id : ids) {
+    std::set<std::string> others = ids;
+    others.erase(id);
+    if (!compiles(withChunksFrom(mine, stub, others))) broken.insert(id);
+  }
+  if (broken.empty() || !compiles(withChunksFrom(mine, stub, broken))) return {};
+  return broken;
+}
+
+namespace {
+const char* const kCulpritWords = "GLSL that does not compile (found by compiling each exercise alone): exercise ";
+}  // namespace
+
+std::string culpritLine(const std::set<std::string>& ids) {
+  std::string line = kCulpritWords;
+  for (const auto& id : ids) line += (&id == &*ids.begin() ? "" : ", ") + id;
+  return line;
+}
+
+std::set<std::string> culpritsIn(const std::string& log) {
+  std::set<std::string> ids;
+  // Only at a line's start, or after the program's name ("lab01: "): never inside a compiler's
+  // message, which may quote a student's text (an #error with these words).
+  size_t at = log.find(kCulpritWords);
+  for (; at != std::string::npos; at = log.find(kCulpritWords, at + 1)) {
+    const size_t line = log.rfind('\n', at) == std::string::npos ? 0 : log.rfind('\n', at) + 1;
+    const std::string before = log.substr(line, at - line);
+    if (before.empty() || (before.size() > 2 && before.compare(before.size() - 2, 2, ": ") == 0 &&
+                           before.find_first_of(" :") == before.size() - 2))
+      break;
+  }
+  if (at == std::string::npos) return ids;
+  const size_t from = at + std::string(kCulpritWords).size();
+  std::string list = log.substr(from, log.find('\n', from) - from);
+  for (size_t p = 0; p < list.size();) {
+    const size_t comma = list.find(", ", p);
+    ids.insert(list.substr(p, comma == std::string::npos ? std::string::npos : comma - p));
+    p = comma == std::string::npos ? list.size() : comma + 2;
+  }
+  return ids;
+}
+
 }  // namespace wb

@@ -3,8 +3,10 @@
 /// 09.2's chunk, which runs to the next marker or the end; the text above the first marker (shared
 /// helpers) is the chunk "". Isolation swaps other exercises' chunks for the solution's
 /// (glsl_harness.hpp); hot reload swaps a chunk that no longer compiles for its last good text
-/// (shader.hpp). Only text here: no GL.
+/// (shader.hpp); a file that does not compile is blamed on the chunks that fail alone, found by
+/// compiling (chunksThatDoNotCompile). Only text here: no GL (the compiler is the caller's).
 #pragma once
+#include <functional>
 #include <set>
 #include <string>
 #include <utility>
@@ -36,5 +38,24 @@ std::set<std::string> changedChunks(const std::string& before, const std::string
 /// (source kThisFileSource, shader.hpp) so that every other chunk keeps its line numbers in the
 /// compiler's messages.
 std::string withChunksFrom(const std::string& current, const std::string& lastGood, const std::set<std::string>& ids);
+
+/// Whether a whole exercise file compiles, as some program or kernel reads it (the caller's GL).
+using CompilesFn = std::function<bool(const std::string& text)>;
+
+/// The exercises whose chunks keep `mine` from compiling, decided by compiling and never by reading a
+/// compiler's log: vendors word, number and cascade errors differently (NVIDIA follows a missing ';'
+/// with errors in functions that are fine). Each exercise chunk of `mine` is compiled alone, every
+/// other exercise's chunk taken from `stub` (the file as handed out, or its last text that compiled);
+/// the chunks that fail alone are the ones, when `mine` compiles with all of them swapped for the
+/// stub's. Empty when that cannot be told: no stub, an error outside the chunks (the helpers above
+/// the first marker), or one that only chunks together make. Costs a compile per chunk, and one.
+std::set<std::string> chunksThatDoNotCompile(const std::string& mine, const std::string& stub,
+                                             const CompilesFn& compiles);
+
+/// The line that names chunksThatDoNotCompile()'s exercises in a log, where the judge reads them
+/// (culpritsIn()): the same words on every GL implementation.
+std::string culpritLine(const std::set<std::string>& ids);
+/// The exercises a log's culpritLine() names; empty when it has none.
+std::set<std::string> culpritsIn(const std::string& log);
 
 }  // namespace wb

@@ -1,8 +1,10 @@
 #include "common/exercise/exercise_source_rules.hpp"
 
 #include "common/exercise/exercise_chunks.hpp"
+#include "common/exercise/glsl_harness.hpp"
 #include "common/exercise/include_policy.hpp"
 
+#include <map>
 #include <set>
 #include <utility>
 
@@ -64,6 +66,27 @@ class ExerciseSourceRules : public SourceRules {
       f.note = fallbackNote(swap, !swap[0].second.empty() && chunkIsStub(good.at(swap[0].first), swap[0].second));
     }
     return out;
+  }
+
+  // Each student's file alone (chunksThatDoNotCompile against the file as handed out). One answer
+  // per file text: every program that includes the file would be asked the same.
+  std::string blame(const std::vector<fs::path>& files, const BuildsFn& builds) const override {
+    static std::map<std::pair<fs::path, std::string>, std::set<std::string>> known;
+    std::set<std::string> all;
+    for (const auto& file : files) {
+      if (!guardsLoops(file)) continue;
+      std::string mine, stub;
+      try {
+        mine = readFile(file), stub = readFile(handedOutShaderFile(file.filename().string()));
+      } catch (const std::exception&) {
+        continue;  // (no stub to compare with: nothing to name)
+      }
+      const auto key = std::make_pair(file, mine);
+      if (!known.count(key))
+        known[key] = chunksThatDoNotCompile(mine, stub, [&](const std::string& t) { return builds({{file, t}}); });
+      all.insert(known[key].begin(), known[key].end());
+    }
+    return all.empty() ? "" : culpritLine(all);
   }
 };
 

@@ -26,12 +26,13 @@ std::string isolatedExerciseSource(const std::string& file, const std::string& i
 /// (a judge, which was built with the solution, reads the student's GLSL there), else found on the
 /// shader search path.
 std::filesystem::path submittedShaderFile(const std::string& file);
+/// The lab's shaders/`file` as handed out: the student edition's tests/stubs/NN_name/shaders/, else
+/// the lab's own folder (the stubs, in the instructor edition). Compile-based isolation swaps chunks
+/// for its (exercise_chunks.hpp); it may not exist (a program's own file: no exercise in it).
+std::filesystem::path handedOutShaderFile(const std::string& file);
 /// The GLSL exercise whose chunk of the student's shaders/`file` holds line `line` (1-based): the
 /// one with the nearest "// EXERCISE" marker above it; "" above the first marker or for no such file.
 std::string exerciseAtLine(const std::string& file, int line);
-/// The GLSL exercise whose chunk holds the first compile error in `message` ("…/shaders/exercise.glsl:13:
-/// error: …"), by exerciseAtLine(); "" when it names none.
-std::string glslErrorOwner(const std::string& message);
 /// True when the lab's manifest puts exercise `id` in shaders/`file`.
 bool isGlslExercise(const std::string& file, const std::string& id);
 /// The shader file (name under shaders/) that the manifest puts GLSL exercise `id` in, e.g.

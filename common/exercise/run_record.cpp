@@ -46,6 +46,7 @@ RunResult readRunRecord(const fs::path& path) {
       r.gapTexels = number("contact_gap_texels"), r.shadowLightPercent = number("shadow_light_percent");
       r.areaMeanAbsPercent = number("area_mean_abs_percent"), r.areaOffPercent = number("area_off_percent");
       r.seamErrorPercent = number("seam_error_percent"), r.restErrorPercent = number("rest_error_percent");
+      r.todoPixels = long(number("todo_pixels").value_or(0));
       for (const auto& p : m.value("penumbra", nlohmann::json::array()))
         r.penumbra.push_back({p.at("distance").get<double>(), p.at("theory").get<double>(), p.at("width").get<double>(),
                               p.at("reference_width").get<double>()});

@@ -44,6 +44,7 @@ struct RunResult {
   std::optional<double> areaOffPercent;                 ///< the share of pixels off by more than 0.1, the same
   std::optional<double> seamErrorPercent;               ///< a cube map's mean |error| near its face boundaries
   std::optional<double> restErrorPercent;               ///< the same away from them
+  long todoPixels = 0;  ///< pixels that showed a stub's pattern: the measurements say nothing yet
   /// The penumbra probe's slabs: receiver-blocker distance, theory, rendered and reference widths.
   std::vector<std::array<double, 4>> penumbra;
 };

@@ -130,71 +130,6 @@ ShaderSource preprocessShader(const std::string& text, const fs::path& origin, c
   return src;
 }
 
-std::string firstErrorLine(const std::string& message) {
-  std::string line = message.substr(0, message.find('\n'));
-  if (const auto at = message.find(": error"); at != std::string::npos) {
-    const size_t begin = message.rfind('\n', at) == std::string::npos ? 0 : message.rfind('\n', at) + 1;
-    line = message.substr(begin, message.find('\n', at) - begin);
-  }
-  // labs/03_pcf/shaders/exercise.glsl:14, not the checkout's absolute path: short enough to read.
-  if (const std::string root = std::string(variant::kSourceDir) + "/"; line.rfind(root, 0) == 0)
-    line = line.substr(root.size());
-  return line;
-}
-
-namespace {
-
-// Line `line` (1-based) of `file`, or "" when it cannot be read.
-std::string lineOf(const fs::path& file, int line) {
-  std::ifstream in(file);
-  std::string s;
-  for (int k = 0; k < line && std::getline(in, s);) ++k;
-  return in ? s : "";
-}
-
-// Mesa names some errors inside an included file by the top file's source number, with the right
-// line ("0:26(10): error: `zReceiverr' undeclared" for exercise.glsl:26). When a message quotes a
-// name that the named file's line does not hold, and exactly one other file's same line does, that
-// file is meant.
-size_t fileQuoted(const std::string& message, size_t file, int line, const std::vector<fs::path>& files) {
-  static const std::regex quoted(R"([`'"]([A-Za-z_]\w*)['"])");
-  std::smatch m;
-  if (!std::regex_search(message, m, quoted) || lineOf(files[file], line).find(m[1].str()) != std::string::npos)
-    return file;
-  size_t found = file, count = 0;
-  for (size_t k = 0; k < files.size(); ++k)
-    if (k != file && lineOf(files[k], line).find(m[1].str()) != std::string::npos) found = k, ++count;
-  return count == 1 ? found : file;
-}
-
-}  // namespace
-
-std::string mapShaderLog(const std::string& log, const std::vector<fs::path>& files,
-                         const std::map<int, std::string>& unquoted) {
-  // Mesa writes "2:14(3): error: ...", NVIDIA "2(14) : error ..."; both start with the source number.
-  static const std::regex posRe(R"((\d+):(\d+)\((\d+)\)|(\d+)\((\d+)\))");
-  std::map<std::pair<size_t, int>, size_t> meant;  // (source, line) -> the file a quoted name showed
-  std::string out;
-  std::istringstream in(log);
-  for (std::string s; std::getline(in, s);) {
-    std::smatch m;
-    if (std::regex_search(s, m, posRe)) {
-      size_t file = std::stoul(m[1].matched ? m[1].str() : m[4].str());
-      const std::string line = m[1].matched ? m[2].str() : m[5].str();
-      if (const auto said = file < (1u << 30) ? unquoted.find(int(file)) : unquoted.end(); said != unquoted.end()) {
-        s = said->second;
-      } else if (file < files.size()) {
-        const auto key = std::make_pair(file, std::stoi(line));
-        if (!meant.count(key)) meant[key] = fileQuoted(m.suffix().str(), file, key.second, files);
-        file = meant[key];
-        s = m.prefix().str() + files[file].string() + ":" + line + m.suffix().str();
-      }
-    }
-    out += s + "\n";
-  }
-  return out;
-}
-
 Program::Program(std::vector<ShaderStage> stages, std::string defines)
     : stages_(std::move(stages)), defines_(std::move(defines)) {
   program_ = build();
@@ -227,7 +162,7 @@ ProgramId linkProgram(const std::vector<std::pair<GLenum, ShaderSource>>& stages
       glGetShaderiv(sh, GL_INFO_LOG_LENGTH, &len);
       std::string log(std::max(len, 1), '\0');
       glGetShaderInfoLog(sh, len, nullptr, log.data());
-      errors += mapShaderLog(log.c_str(), src.files, src.unquoted);
+      errors += mapShaderLog(logAsVendor(log.c_str()), src.files, src.unquoted);
     }
     glAttachShader(program.id(), sh);
     shaders.push_back(sh);
@@ -302,8 +237,27 @@ Program Program::tryLoad(std::vector<ShaderStage> stages, std::string defines, c
     p.rememberGoodTexts();
   } catch (const Error& e) {
     p.error_ = e.what();
+    p.blameFailure();
   }
   return p;
+}
+
+void Program::blameFailure() {
+  if (!rules_) return;
+  std::vector<fs::path> files;
+  for (const auto& input : inputs_) files.push_back(input.first);
+  const auto inputs = inputs_;  // (a trial build records its own inputs)
+  const std::string shared = builtShared_;
+  const std::string line = rules_->blame(files, [&](const Substitutes& texts) {
+    try {
+      build(texts);
+      return true;
+    } catch (const Error&) {
+      return false;
+    }
+  });
+  inputs_ = inputs, builtShared_ = shared;
+  if (!line.empty()) error_ = line + "\n" + error_;
 }
 
 void Program::rememberGoodTexts() {
@@ -349,6 +303,7 @@ bool Program::reloadIfChanged() {
     return true;
   } catch (const Error& e) {
     error_ = e.what();  // keep drawing: a fallback the rules offer, or the last good program
+    blameFailure();
     return buildFallback();
   }
 }

@@ -3,10 +3,12 @@
 /// errors mapped back to the original file and line, and hot reload that keeps the last good program.
 #pragma once
 #include "common/platform/gl.hpp"
+#include "common/platform/shader_log.hpp"  // mapShaderLog(), firstErrorLine()
 
 #include <glm/mat4x4.hpp>
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -66,6 +68,14 @@ class SourceRules {
   /// The fallbacks to try, in order, from the remembered texts of the last good build and the same
   /// files' texts now.
   virtual std::vector<Fallback> fallbacks(const Substitutes& good, const Substitutes& now) const = 0;
+  /// Whether the program would build with these texts instead of the files' own.
+  using BuildsFn = std::function<bool(const Substitutes&)>;
+  /// After a failed build of a program that read `files`: a line naming what in them keeps it from
+  /// building, found with `builds` (never by reading the compiler's log, which every vendor words
+  /// differently), or "" when the rules cannot name it.
+  virtual std::string blame(const std::vector<std::filesystem::path>& /*files*/, const BuildsFn& /*builds*/) const {
+    return "";
+  }
 };
 
 /// Expands `text` (read from `origin`): inserts `defines` after `#version`, resolves `#include` as
@@ -75,16 +85,9 @@ ShaderSource preprocessShader(const std::string& text, const std::filesystem::pa
                               const std::vector<std::filesystem::path>& path, const Substitutes& substitutes = {},
                               const SourceRules* rules = nullptr);
 
-/// The line of a compiler's message that names file:line ("labs/03_pcf/shaders/exercise.glsl:13: error:
-/// ...", relative to the checkout), or its first line.
-std::string firstErrorLine(const std::string& message);
 /// A GLSL source number that means "back to this file": the preprocessor turns `#line L 9998` into
 /// the including file's own number, so that text spliced into a file keeps its line numbers.
 constexpr int kThisFileSource = 9998;
-/// Rewrites compiler positions such as "2:14(3): error" into "shaders/exercise.glsl:14: error"; a
-/// message about a source number in `unquoted` is replaced by what it says there.
-std::string mapShaderLog(const std::string& log, const std::vector<std::filesystem::path>& files,
-                         const std::map<int, std::string>& unquoted = {});
 
 /// Compiles and links preprocessed stages, with `feedback` the outputs that transform feedback
 /// captures (interleaved); throws wb::Error with every message mapped to file:line.
@@ -143,6 +146,7 @@ class Program {
   ProgramId build(const Substitutes& substitutes = {});  // throws wb::Error
   void rememberGoodTexts();  // the texts the rules remember, after a build from the files alone
   bool buildFallback();      // after a failed build; true when a new program is in use
+  void blameFailure();       // after a failed build: the rules' blame() first in error_
   std::vector<ShaderStage> stages_;
   std::string builtShared_;  // the shared defines it was built with
   std::string defines_;

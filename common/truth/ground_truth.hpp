@@ -29,6 +29,11 @@ struct VisibilityMetrics {
   double shadowLight = 0;    ///< sum of the drawn visibility over those: partial light counts too
   long rimPixels = 0;        ///< light-facing pixels within kRimPixels of an edge of the exact shadow
   long wrongOutsideRim = 0;  ///< acne and leak pixels farther than that from every edge
+  /// Truly shadowed light-facing pixels beside a lit one: the exact shadow's outline, one pixel wide.
+  /// An exact technique may flip only pixels whose centre lies within rounding of an edge, and a map
+  /// finer than a pixel moves an edge by less than one: either way the drawn area may differ from the
+  /// exact one by at most this many pixels, whatever the rasterizer.
+  long outlinePixels = 0;
   /// Acne rate: the share of lit light-facing pixels drawn shadowed.
   double acneRate() const { return litPixels ? double(acnePixels) / litPixels : 0; }
   /// Light leak: the share of truly shadowed pixels drawn lit.

@@ -35,10 +35,12 @@ nlohmann::json MeasureResult::toJson() const {
                       {"shadowed_pixels", metrics.shadowedPixels},
                       {"shadow_area_ratio", metrics.areaRatio()},
                       {"rim_pixels", metrics.rimPixels},
+                      {"outline_pixels", metrics.outlinePixels},
                       {"wrong_outside_rim_percent", 100 * metrics.wrongOutsideRimRate()},
                       {"contact_gap_texels", nullptr},
                       {"pcf_diff_percent", nullptr},
                       {"pcf_lighter_percent", nullptr},
+                      {"todo_pixels", todoPixels},
                       {"notes", notes}};
   if (gapTexels >= 0) j["contact_gap_texels"] = gapTexels;
   if (reference.pixels > 0) {

@@ -127,6 +127,9 @@ TEST_F(GlTest, Ex07_3_PenumbraFromSimilarTriangles) {
 // --- 07.2: the blocker search -----------------------------------------------------------------------
 // Blockers at distance 3 on the left half, 5 on the upper right quarter, the far plane elsewhere; a
 // receiver at 8 finds a mix. Only the blockers are averaged; a receiver in front of them all finds none.
+// The last four receivers lie on the upper quarter's own surface, 0.004 behind its texels (a sloped
+// receiver's neighbouring texels are that much nearer the light): within the bias (0.01) they are
+// the receiver itself, never its blockers; without the bias the whole quarter would be counted.
 TEST_F(GlTest, Ex07_2_AveragesOnlyTheBlockers) {
   const Map map([](int x, int y) { return x < kSize / 2 ? 3.0 : y >= kSize / 2 ? 5.0 : kFar; });
   Taps taps;
@@ -137,6 +140,11 @@ TEST_F(GlTest, Ex07_2_AveragesOnlyTheBlockers) {
     in.emplace_back(u, v, k % 3 == 0 ? 0.1f : k % 3 == 1 ? 0.3f : 0.6f, 0.37f * float(k));
     in.emplace_back(k == 23 ? 2.5f : 8.0f, k % 2 ? 16 : 32, 0.01f, 0);
   }
+  for (int k = 0; k < 4; ++k) {  // on the upper quarter's surface (5), with the left half (3) in reach
+    in.emplace_back(0.62f + 0.05f * float(k), 0.7f, k % 2 ? 0.3f : 0.6f, 0.53f * float(k));
+    in.emplace_back(5.004f, k % 2 ? 16 : 32, 0.01f, 0);
+  }
+  std::swap(in[46], in[in.size() - 2]), std::swap(in[47], in[in.size() - 1]);  // (the last case stays the 2.5 one)
   std::vector<glm::vec4> got;
   const std::string body =
       "float a = IN(0).w; result.xy = pcssFindBlockers(wb_tex0, IN(0).xy, IN(1).x, IN(0).z, int(IN(1).y), "

@@ -10,6 +10,10 @@
 
 #include <glad/gl.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <iomanip>
 #include <map>
 #include <sstream>
 
@@ -316,6 +320,45 @@ TEST(Lab09, Ex09_5_MeasuredExactWithTheCameraInside) {
 // --size 480x270 --set volume.method=zfail --metrics; 0.04% leak under the grader's turn of seed 16). As
 // handed out: acne 3.45%. A cap without its push leaves 0.10% (speckles), one pushed by a constant and
 // not by w 0.16%: neither is the fix.
+// The cap itself, by geometry: whatever a rasterizer does with a cap that lies on the caster's face
+// (llvmpipe rounds it either way, pixel by pixel; NVIDIA draws it at exactly the face's depth and
+// showed no speckle), the fix puts it behind the face by whole units of a 24-bit depth buffer at every
+// distance, and leaves x, y and w alone. Unpushed, it is 0 units behind; pushed by a constant not
+// scaled by w, a twentieth of a unit at 80 m; as handed out, in front.
+TEST_F(GlTest, Ex09_H1_TheNearCapLiesBehindTheFaceAtEveryDistance) {
+  const double unit = std::ldexp(1.0, -23);  // one unit of a 24-bit depth buffer, in NDC
+  std::vector<glm::mat4> projections = {glm::perspective(glm::radians(60.0f), 16.0f / 9, 0.1f, 100.0f),
+                                        glm::infinitePerspective(glm::radians(60.0f), 16.0f / 9, 0.1f)};
+  const glm::mat4 view = glm::lookAt(glm::vec3(3, 4, 5), glm::vec3(0, 0, 0), glm::vec3(0, 1, 0));
+  std::vector<glm::vec4> in;  // per case: the matrix's four columns, then the point
+  for (const auto& proj : projections)
+    for (float distance : {0.5f, 2.0f, 10.0f, 40.0f, 80.0f}) {
+      const glm::mat4 m = proj * view;
+      for (int c = 0; c < 4; ++c) in.push_back(m[c]);
+      const glm::vec3 eye(3, 4, 5), forward = glm::normalize(-eye);
+      in.emplace_back(eye + forward * distance + glm::vec3(0.1f, -0.2f, 0.05f) * distance * 0.2f, 0);
+    }
+  // The push measured in the kernel, against the same product there: (cap - face) in clip space over w.
+  std::vector<glm::vec4> got;
+  WB_RUN_GLSL(got, "09.H1",
+              "mat4 m = mat4(IN(0), IN(1), IN(2), IN(3)); vec4 face = m * vec4(IN(4).xyz, 1.0);"
+              "vec4 cap = nearCapVertex(m, IN(4).xyz); result = vec4(cap.xyz - face.xyz, cap.w - face.w) / face.w;",
+              int(in.size() / 5), 5, in);
+  for (size_t k = 0; k < got.size(); ++k) {
+    const glm::dmat4 m(glm::mat4(in[5 * k], in[5 * k + 1], in[5 * k + 2], in[5 * k + 3]));
+    const double w = (m * glm::dvec4(glm::dvec3(in[5 * k + 4]), 1.0)).w, behind = got[k].z / unit;
+    std::ostringstream where;
+    where << "at w = " << std::setprecision(3) << w << " (" << (k < 5 ? "a far plane at 100" : "no far plane")
+          << "), case " << k;
+    EXPECT_EQ(glm::vec3(got[k].x, got[k].y, got[k].w), glm::vec3(0))
+        << "WRONG: the cap moves only in depth: its x, y and w stay the face's, " << where.str();
+    EXPECT_GE(behind, 2.0) << "WRONG: the near cap is " << behind << " depth units (2^-24) behind the caster's face "
+                           << where.str() << "; it must be a few units behind at every distance (in front, it "
+                           << "shadows the caster; on the face, the depth test decides pixel by pixel)";
+    EXPECT_LE(behind, 64.0) << "WRONG: the near cap is " << behind << " depth units behind the face " << where.str()
+                            << ": far enough to uncover what lies just behind the caster";
+  }
+}
 TEST(Lab09, Ex09_H1_MeasuredZFailExactFromTheOverview) {
   wb::test::expectSymptomGone("09.H1", "hunt_zfail_overview", wb::test::labArgs({"volume.method=zfail"}), {0.06, 0.06});
 }

@@ -29,6 +29,8 @@ const char* kShader =
     "// EXERCISE 07.4\nfloat pcss(float z) { vec2 b = findBlockers(z); return max(b.x, searchWidth2(z)); }\n"
     "float searchWidth2(float z) { return z; }\n";
 
+const std::set<std::string> kAllHaveOwnTests = {"07.1", "07.2", "07.4"};
+
 Diagnosis failure(const std::string& verdict, const std::string& headline) {
   Diagnosis d;
   d.verdict = verdict, d.headline = headline, d.details = {"a detail"};
@@ -59,7 +61,7 @@ TEST(CheckAttribution, WithoutTheReferenceOneMistakeCostsOneExercise) {
   const std::set<std::string> ownFailed = {"07.2", "07.4"};
   std::map<std::string, std::string> blockers;
   std::set<std::string> unblocked = {"07.1"};
-  wb::test::attribute(kManifest, {first, ownFailed, blockers, unblocked});
+  wb::test::attribute(kManifest, {first, ownFailed, blockers, unblocked, kAllHaveOwnTests});
   unsetenv("WB_SUBMISSION_DIR");
   EXPECT_EQ(first["07.2"].verdict, "WRONG");
   EXPECT_EQ(first["07.4"].verdict, "ERROR");
@@ -68,6 +70,36 @@ TEST(CheckAttribution, WithoutTheReferenceOneMistakeCostsOneExercise) {
   EXPECT_EQ(first["07.1"].verdict, "WAITS");
   EXPECT_NE(first["07.1"].headline.find("its scene is checked once 07.2 passes"), std::string::npos)
       << first["07.1"].headline;
+}
+
+// An exercise with no test but its scenes (a bug hunt, as 07.1 here) whose scene is spoilt by a wrong
+// 07.2 passes nothing of its own: it waits on 07.2, neither passed nor failed, with no number.
+TEST(CheckAttribution, AnExerciseMeasuredOnlyByItsScenesWaits) {
+  std::map<std::string, Diagnosis> first = {
+      {"07.1", failure("WRONG",
+                       "WRONG: in scene 'x', 100.00% of the pixels the light truly reaches are drawn in "
+                       "shadow")},
+      {"07.2", failure("WRONG", "WRONG: got 65535, want 30")}};
+  std::map<std::string, std::string> blockers;
+  std::set<std::string> unblocked = {"07.1"};
+  wb::test::attribute(kManifest, {first, {"07.2"}, blockers, unblocked, {"07.2"}});
+  EXPECT_EQ(first["07.1"].verdict, "WAITING");
+  EXPECT_EQ(first["07.1"].headline.rfind("waiting on 07.2: its scenes are measured once 07.2 passes", 0), 0u)
+      << first["07.1"].headline;
+  EXPECT_EQ(first["07.1"].headline.find('%'), std::string::npos) << "no number: the stubs' or the blocker's";
+}
+
+// A scene that is wrong while the only other unfinished exercise is a stub shows its own mistake: a
+// stub draws its pattern, which the scene's test names as "blocked by" itself, so the stub did not
+// spoil this picture (02.H1 with its bug, beside the stubs of 02.2, 02.5 and 02.6).
+TEST(CheckAttribution, AStubDoesNotExcuseAWrongScene) {
+  std::map<std::string, Diagnosis> first = {
+      {"07.1", failure("WRONG", "WRONG: visibility in scene 'x' differs from the reference on 6.28% of pixels")},
+      {"07.2", failure("NOT IMPLEMENTED", "NOT IMPLEMENTED: the GLSL function still returns WB_TODO")}};
+  std::map<std::string, std::string> blockers;
+  std::set<std::string> unblocked = {"07.1"};
+  wb::test::attribute(kManifest, {first, {"07.2"}, blockers, unblocked, {"07.2"}});
+  EXPECT_EQ(first["07.1"].verdict, "WRONG") << first["07.1"].headline;
 }
 
 // 07.2 loops for ever: 07.4, which calls it, times out in its scene. That time-out is 07.2's too, so
@@ -83,7 +115,7 @@ TEST(CheckAttribution, ATimeOutInACallerOfAnEndlessLoopIsTheLoops) {
                                               {"07.4", failure("ERROR", own)}};
     std::map<std::string, std::string> blockers;
     std::set<std::string> unblocked;
-    wb::test::attribute(kManifest, {first, {"07.2", "07.4"}, blockers, unblocked});
+    wb::test::attribute(kManifest, {first, {"07.2", "07.4"}, blockers, unblocked, kAllHaveOwnTests});
     const bool compile = std::string(own).find("compile") != std::string::npos;
     EXPECT_EQ(first["07.4"].headline.rfind(compile ? "ERROR: compile error" : "ERROR: blocked by 07.2", 0), 0u)
         << first["07.4"].headline;
@@ -104,7 +136,7 @@ TEST(CheckAttribution, AStubStaysNotImplemented) {
       {"07.4", failure("NOT IMPLEMENTED", "NOT IMPLEMENTED: the GLSL function still returns WB_TODO")}};
   std::map<std::string, std::string> blockers;
   std::set<std::string> unblocked;
-  wb::test::attribute(kManifest, {first, {"07.2", "07.4"}, blockers, unblocked});
+  wb::test::attribute(kManifest, {first, {"07.2", "07.4"}, blockers, unblocked, kAllHaveOwnTests});
   unsetenv("WB_SUBMISSION_DIR");
   EXPECT_EQ(first["07.4"].verdict, "NOT IMPLEMENTED");
 }

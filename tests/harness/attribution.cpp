@@ -18,6 +18,13 @@ bool blockedItself(const Findings& f, const std::string& id) {
   return d != f.first.end() && d->second.headline.rfind("ERROR: blocked by", 0) == 0;
 }
 
+// True when exercise `id` is still the stub: its pattern, where a scene draws it, makes that scene's
+// own test say "blocked by" it; a scene that is wrong without the pattern is not its doing.
+bool stillStub(const Findings& f, const std::string& id) {
+  const auto d = f.first.find(id);
+  return d != f.first.end() && d->second.verdict == "NOT IMPLEMENTED";
+}
+
 // Without the solution's shaders (the student edition) a scene draws every GLSL exercise with the
 // student's own, so when only an exercise's scene tests fail while a GLSL exercise fails its own
 // tests, the mistake may be that one's: the exercise is blocked by it, never wrong. (The grader
@@ -30,7 +37,8 @@ void blockWhereNoReference(const std::vector<ManifestEntry>& manifest, Findings&
     if (!sceneFailed || f.ownFailed.count(id)) continue;
     std::string by;
     for (const auto& e : manifest)
-      if (e.id != id && e.file.rfind("shaders/", 0) == 0 && f.ownFailed.count(e.id) && !blockedItself(f, e.id))
+      if (e.id != id && e.file.rfind("shaders/", 0) == 0 && f.ownFailed.count(e.id) && !blockedItself(f, e.id) &&
+          !stillStub(f, e.id))
         by += (by.empty() ? "" : ", ") + e.id;
     if (by.empty()) continue;
     f.blockers[id] = by, f.unblocked.erase(id);  // (its scene failures are put down to `by`)
@@ -52,9 +60,11 @@ void waitWhereNoReference(Findings& f) {
     const auto by = f.blockers.find(id);
     if (d.verdict != "ERROR" || f.ownFailed.count(id) || f.unblocked.count(id) || by == f.blockers.end()) continue;
     d.details.clear();  // (its scene's failures are the blocker's)
-    d.verdict = "WAITS";
-    const bool several = by->second.find(',') != std::string::npos;
-    d.headline = "passes its own tests; its scene is checked once " + by->second + (several ? " pass" : " passes") +
+    const bool several = by->second.find(',') != std::string::npos, own = f.withOwnTests.count(id) > 0;
+    d.verdict = own ? "WAITS" : "WAITING";
+    d.headline = std::string(own ? "passes its own tests; its scene is checked"
+                                 : "waiting on " + by->second + ": its scenes are measured") +
+                 " once " + by->second + (several ? " pass" : " passes") +
                  " (here every scene draws your other exercises as they are; the grader draws them with the "
                  "reference)";
   }

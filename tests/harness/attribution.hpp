@@ -5,7 +5,10 @@
 /// edition has no reference: there a scene draws the student's own code for every exercise, and a
 /// GLSL function calls the student's own helpers. check then says what is true: an exercise that
 /// fails only because another does is "blocked by" it (an error, without a hint), and one that passes
-/// its own tests while its scene waits on another "passes its own tests", as the grader will count it.
+/// its own tests while its scene waits on another "passes its own tests", as the grader will count it;
+/// one with no test of its own but its scenes (a bug hunt) is "waiting" on the others: neither passed
+/// nor failed, with no number. A stub shows its pattern, which a scene test names itself: only an
+/// exercise that is wrong or an error can be what spoils another's scene.
 #pragma once
 #include "tests/harness/diagnosis.hpp"
 
@@ -29,6 +32,7 @@ struct Findings {
   const std::set<std::string>& ownFailed;        ///< exercises failing a test that draws no scene
   std::map<std::string, std::string>& blockers;  ///< what blocks each exercise's scene tests ("07.4")
   std::set<std::string>& unblocked;              ///< exercises with a scene test that fails on its own
+  const std::set<std::string>& withOwnTests;     ///< exercises that ran a test that draws no scene
 };
 
 /// Revises the verdicts as above (the student edition only), then marks every exercise whose run

@@ -102,9 +102,17 @@ std::optional<double> firstNumber(const std::string& text) {
   return std::nullopt;
 }
 
+// The share of pixels a scene test lets differ ("differs from the reference on 44.50% of pixels
+// (allowed 0.50%)"), in percent; 0 for any other message.
+double allowedShare(const std::string& headline) {
+  static const std::regex allowed(R"(% of pixels \(allowed ([0-9.]+)%\))");
+  std::smatch m;
+  return std::regex_search(headline, m, allowed) ? std::strtod(m[1].str().c_str(), nullptr) : 0.0;
+}
+
 }  // namespace
 
-std::string knownMistake(const std::string& test, double got) {
+std::string knownMistake(const std::string& test, double got, double slack) {
   static const nlohmann::json hints = [] {
     std::ifstream in(fs::path(variant::kSourceDir) / "tests/hints" / (std::string(variant::kLab) + ".json"));
     return in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
@@ -119,7 +127,9 @@ std::string knownMistake(const std::string& test, double got) {
     const bool whole = want == std::round(want) && got == std::round(got);
     const bool same = h["value"].is_null()  // NaN or infinity (JSON has neither): a division by zero
                           ? !std::isfinite(got)
-                          : whole ? got == want : std::abs(got - want) <= 1e-3 * std::max(1e-6, std::abs(want));
+                          : whole && slack == 0
+                                ? got == want
+                                : std::abs(got - want) <= std::max(slack, 1e-3 * std::max(1e-6, std::abs(want)));
     const std::string hint = h.value("hint", "");
     if (same && std::find(found.begin(), found.end(), hint) == found.end()) found.push_back(hint);
   }
@@ -155,7 +165,7 @@ Diagnosis diagnose(const std::string& test, const std::string& message) {
                           " steps, the most the workbook lets an exercise's loops run; on a GPU it would hang "
                           "(does the loop's counter change?)");
     if (d.got)
-      if (const std::string hint = knownMistake(test, *d.got); !hint.empty())
+      if (const std::string hint = knownMistake(test, *d.got, allowedShare(d.headline)); !hint.empty())
         d.details.push_back(hint.rfind("one of these:", 0) == 0 ? "looks like a known mistake, " + hint
                                                                 : "looks like a known mistake: " + hint);
   }

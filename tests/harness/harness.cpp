@@ -89,45 +89,40 @@ void GlTest::TearDown() {
 
 std::string renderer() { return g_renderer; }
 
-// The exercise file as handed out, where this edition has it: the student edition's tests/stubs/, or
-// the lab's own folder when the submission is elsewhere (WB_SUBMISSION_DIR); "" without one.
-static std::string stubText(const std::string& file) {
-  const fs::path exported = fs::path(variant::kSourceDir) / "tests/stubs" / variant::kLab / "shaders" / file;
-  const char* submission = std::getenv("WB_SUBMISSION_DIR");
-  const fs::path own = fs::path(variant::kLabDir) / "shaders" / file;
-  try {
-    if (fs::exists(exported)) return readFile(exported);
-    if (submission && *submission && fs::exists(own)) return readFile(own);
-  } catch (const std::exception&) {
-  }
-  return "";
-}
-
 // Exercise `id`'s kernel. Without the reference (the student edition), a compile error in another
-// exercise's chunk would stop this one's tests: that chunk is then swapped for the stub's, and the
-// kernel tried again; if the exercise needs what it swapped (its results are the stub's WB_TODO), it
-// is blocked by that exercise.
+// exercise's chunk would stop this one's tests: the chunks that do not compile alone (found by
+// compiling, never from the log) are then swapped for the stub's, and the kernel tried again; if the
+// exercise needs what was swapped (its results are the stub's WB_TODO), it is blocked by that one.
 static std::vector<glm::vec4> runIsolatedKernel(const std::string& id, const std::string& body, int count, int stride,
                                                 const std::vector<glm::vec4>& inputs, const std::vector<GLuint>& ids) {
-  std::string text = isolatedExerciseSource("exercise.glsl", id);
-  const std::string stub = *variant::kSolutionDir ? "" : stubText("exercise.glsl");
-  std::set<std::string> swapped;
-  for (;;) {
-    try {
-      auto got = runGlslKernel(text, submittedShaderFile("exercise.glsl"), body, count, stride, inputs, ids);
-      if (anyTodo(got) && !swapped.empty())
-        throw Error("blocked by " + *swapped.begin() + ": its chunk does not compile, and " + id +
-                    " needs it (fix the compile error first; the grader tests " + id + " with the reference)");
-      return got;
-    } catch (const SlowShader&) {
-      throw;
-    } catch (const Error& e) {
-      const std::string owner = glslErrorOwner(e.what());
-      if (stub.empty() || owner.empty() || owner == id || swapped.count(owner)) throw;
-      swapped.insert(owner);
-      text = withChunksFrom(text, stub, {owner});
-    }
+  const std::string file = "exercise.glsl";
+  const fs::path origin = submittedShaderFile(file);
+  const std::string text = isolatedExerciseSource(file, id);
+  std::set<std::string> broken;
+  std::string stub;
+  try {
+    return runGlslKernel(text, origin, body, count, stride, inputs, ids);
+  } catch (const SlowShader&) {
+    throw;
+  } catch (const Error&) {
+    // (With the reference's other chunks the error is this one's; without a stub nothing can be swapped.)
+    if (*variant::kSolutionDir || !fs::exists(handedOutShaderFile(file))) throw;
+    stub = readFile(handedOutShaderFile(file));
+    broken = chunksThatDoNotCompile(text, stub, [&](const std::string& t) {
+      try {
+        runGlslKernel(t, origin, body, 0, stride, {}, ids);
+        return true;
+      } catch (const Error&) {
+        return false;
+      }
+    });
+    if (broken.empty() || broken.count(id)) throw;
   }
+  auto got = runGlslKernel(withChunksFrom(text, stub, broken), origin, body, count, stride, inputs, ids);
+  if (anyTodo(got))
+    throw Error("blocked by " + *broken.begin() + ": its chunk does not compile, and " + id +
+                " needs it (fix the compile error first; the grader tests " + id + " with the reference)");
+  return got;
 }
 
 std::vector<glm::vec4> runExercise(const std::string& id, const std::string& body, int count, int stride,
@@ -209,6 +204,19 @@ SceneMetrics measureScene(const std::string& id, const std::string& name, const 
   }
   if (!run.acnePercent || !run.leakPercent) {
     m.failure = "ERROR: the lab's record holds no measurements:\n" + log;
+    return m;
+  }
+  if (run.todoPixels > 0) {  // a stub's pattern counts as shadow: the numbers would be the stubs'
+    std::string stubs;
+    for (const auto& [other, state] : run.exerciseStates)
+      if (state == "not_implemented" && other != id) stubs += (stubs.empty() ? "" : ", ") + other;
+    m.failure = stubs.empty() ? "NOT IMPLEMENTED: scene '" + name +
+                                    "' shows the not-implemented placeholder, so it "
+                                    "cannot be measured yet"
+                              : "ERROR: blocked by " + stubs + ": scene '" + name +
+                                    "' shows their not-implemented "
+                                    "placeholder (stripes), so it cannot be measured yet: implement " +
+                                    stubs + " first (the grader measures it with the reference)";
     return m;
   }
   m.acnePercent = *run.acnePercent, m.leakPercent = *run.leakPercent, m.gapTexels = run.gapTexels.value_or(-1);

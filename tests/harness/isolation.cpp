@@ -294,11 +294,14 @@ static nlohmann::json drawExercise(const std::string& id, const fs::path& out, c
              << "ERROR: blocked by " << by << ": the lab " << (code == 124 ? "ran out of time" : "crashed")
              << " in exercise " << by << " before it could draw this one; fix " << by << " first. " << cause;
     }
-    // A compile error in another exercise's chunk of a shared shader file blocks this one too.
-    if (const std::string by = glslErrorOwner(cause); !by.empty() && by != id)
+    // A compile error in another exercise's chunk of a shared shader file blocks this one too: the
+    // app names the chunks that do not compile alone (exercise_chunks.hpp), found by compiling.
+    if (const auto culprits = culpritsIn(logText); !culprits.empty() && !culprits.count(id)) {
+      const std::string by = *culprits.begin();
       return ::testing::AssertionFailure() << "ERROR: blocked by " << by << ": the GLSL of exercise " << by
                                            << " does not compile, so the lab could not draw this one; fix " << by
                                            << " first (" << by << " shows the error).";
+    }
     return ::testing::AssertionFailure() << "ERROR: the lab "
                                          << (code == 124  ? "timed out"
                                              : code > 128 ? "crashed"

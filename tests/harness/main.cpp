@@ -50,6 +50,11 @@ std::vector<wb::test::ManifestEntry> readManifest() {
   return out;
 }
 
+// The grader's convention: a test that draws a scene has Scene or Measured in its name.
+bool drawsScene(const std::string& test) {
+  return test.find("Scene") != std::string::npos || test.find("Measured") != std::string::npos;
+}
+
 // "Ex01_3_WorldToShadow" -> "01.3"; a hunt\'s "Ex07_H1_..." -> "07.H1"
 std::string exerciseOf(const std::string& testName) {
   static const std::regex re(R"(^Ex(\d\d)_(\d+|x|H\d+)_)");
@@ -80,11 +85,18 @@ void narrowHints(std::vector<std::string>& details) {
 // The table's last line: how many exercises pass, counted as the grader will count them. Those that
 // pass their own tests while their scene waits on another count (the grader draws their scenes with
 // the reference for the others); those blocked by another are not known before it passes.
-std::string summaryLine(int done, size_t total, int waiting, const std::vector<std::string>& blocked) {
+std::string summaryLine(int done, size_t total, int waiting, const std::vector<std::string>& pending,
+                        const std::vector<std::string>& blocked) {
   std::string line = std::to_string(done) + " of " + std::to_string(total) + " exercises pass their tests";
   if (waiting)
     line += " (" + std::to_string(waiting) + " by their own tests: the grader draws their scenes with the " +
             "reference for the others, and gives them their points if those pass)";
+  if (!pending.empty()) {
+    std::string ids;
+    for (const auto& id : pending) ids += (ids.empty() ? "" : ", ") + id;
+    line += "; " + ids + (pending.size() == 1 ? " is" : " are") + " measured by scenes alone, which wait on " +
+            "other exercises: neither passed nor failed yet";
+  }
   if (!blocked.empty()) {
     std::string ids;
     for (const auto& id : blocked) ids += (ids.empty() ? "" : ", ") + id;
@@ -122,6 +134,7 @@ class CheckListener : public ::testing::EmptyTestEventListener {
     current_ = exerciseOf(info.name());
     ran_.insert(current_);
     test_ = std::string(info.test_suite_name()) + "." + info.name();
+    if (!drawsScene(test_)) withOwnTests_.insert(current_);
   }
   void OnTestPartResult(const ::testing::TestPartResult& r) override {
     if (!r.failed()) return;
@@ -137,10 +150,9 @@ class CheckListener : public ::testing::EmptyTestEventListener {
       if (x.headline.rfind("ERROR: blocked by", 0) == 0) return 1.5;
       return x.verdict == "ERROR" ? 3.0 : x.verdict == "NOT IMPLEMENTED" ? 1.0 : 2.0;
     };
-    // (The grader's convention: a test that draws a scene has Scene or Measured in its name.)
     static const std::regex blockedRe(R"(^ERROR: blocked by ([0-9.xH, ]+):)"), kListSeparator(", ");
     std::smatch by;
-    if (test_.find("Scene") == std::string::npos && test_.find("Measured") == std::string::npos) {
+    if (!drawsScene(test_)) {
       ownFailed_.insert(current_);
     } else if (std::regex_search(d.headline, by, blockedRe)) {
       std::string& list = blockers_[current_];
@@ -165,7 +177,7 @@ class CheckListener : public ::testing::EmptyTestEventListener {
   }
   void OnTestProgramEnd(const ::testing::UnitTest&) override {
     const auto manifest = readManifest();
-    wb::test::attribute(manifest, {first_, ownFailed_, blockers_, unblocked_});
+    wb::test::attribute(manifest, {first_, ownFailed_, blockers_, unblocked_, withOwnTests_});
     for (auto& [id, lines] : hints_)
       for (const auto& line : lines)
         if (auto& d = first_[id];
@@ -179,17 +191,20 @@ class CheckListener : public ::testing::EmptyTestEventListener {
       std::printf("\nLab %s: %s build\n", wb::variant::kLab, wb::variant::kName);
     std::printf("  %-5s %-16s %s\n", "ID", "status", "exercise (then what was found)");
     int done = 0, waiting = 0;
-    std::vector<wb::test::PageRow> page;                 // WB_CHECK_HTML: the same table as a page (check --html)
+    std::vector<std::string> pending;     // measured by their scenes alone, which wait on other exercises
+    std::vector<wb::test::PageRow> page;  // WB_CHECK_HTML: the same table as a page (check --html)
     nlohmann::json verdicts = nlohmann::json::object();  // WB_CHECK_JSON: for the app's live checks
     for (const auto& e : manifest) {
       const wb::test::Diagnosis d = first_.count(e.id) ? first_[e.id] : wb::test::Diagnosis{};
       const std::string status = d.verdict.empty()                ? "passes its tests"
                                  : d.verdict == "WAITS"           ? "passes own tests"
+                                 : d.verdict == "WAITING"         ? "waiting"
                                  : d.verdict == "NOT IMPLEMENTED" ? "not implemented"
                                  : d.verdict == "ERROR"           ? "error"
                                                                   : "wrong";
       done += d.verdict.empty() || d.verdict == "WAITS";
       waiting += d.verdict == "WAITS";
+      if (d.verdict == "WAITING") pending.push_back(e.id);
       if (expectStubs_ && status != "not implemented") exitCode = 1;
       // The whole title on the verdict's line; what was found below it, where it has room.
       std::printf("  %-5s %-16s %s\n", e.id.c_str(), status.c_str(), e.title.c_str());
@@ -213,7 +228,7 @@ class CheckListener : public ::testing::EmptyTestEventListener {
     std::vector<std::string> blocked;  // (their points are not known before their blockers pass)
     for (const auto& e : manifest)
       if (first_.count(e.id) && first_[e.id].headline.rfind("ERROR: blocked by", 0) == 0) blocked.push_back(e.id);
-    const std::string summary = summaryLine(done, manifest.size(), waiting, blocked);
+    const std::string summary = summaryLine(done, manifest.size(), waiting, pending, blocked);
     std::printf("  %s%s\n", summary.c_str(),
                 expectStubs_ ? (exitCode ? " Some stubs are not reported as NOT IMPLEMENTED."
                                          : " Every stub reports NOT IMPLEMENTED.")
@@ -258,6 +273,7 @@ class CheckListener : public ::testing::EmptyTestEventListener {
   std::string test_;           // and the test ("Suite.Name")
   std::map<std::string, wb::test::Diagnosis> first_;
   std::set<std::string> ownFailed_;              // the exercises that fail a test that draws no scene
+  std::set<std::string> withOwnTests_;           // the exercises that ran a test that draws no scene
   std::map<std::string, std::string> blockers_;  // what blocks each exercise's scene tests ("07.4", "09.2, 09.3")
   std::set<std::string> unblocked_;              // the exercises with a scene test that fails on its own
   std::map<std::string, std::vector<std::string>> hints_;  // the known mistakes and pictures of each exercise's tests

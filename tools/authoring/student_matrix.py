@@ -35,7 +35,7 @@ sys.path.insert(0, str(ROOT / "tools" / "authoring"))
 from make_hints import fields_of, replacements  # noqa: E402  (one reader of .mutant files)
 from mutant_matrix import recorded_hint  # noqa: E402  (the hint ctest expects, the same here)
 
-STATUS = re.compile(r"^  (\d\d\.(?:[0-9x]|H\d))\s+(passes its tests|passes own tests|not implemented|error|wrong)\s")
+STATUS = re.compile(r"^  (\d\d\.(?:[0-9x]|H\d))\s+(passes its tests|passes own tests|waiting|not implemented|error|wrong)\s")
 SUMMARY = re.compile(r"^  (\d+) of (\d+) exercises pass their tests", re.M)
 
 
@@ -91,7 +91,8 @@ def judge(mutant, out):
         hint = "right" if shown and all(want in options for options in shown) else ("WRONG" if shown else "MISSING")
     else:
         hint = "WRONG" if shown else "none"
-    score = summary is not None and summary[0] + len(blocked) == summary[1] - 1 and \
+    waiting = {i for i, (s, _) in rows.items() if i != exercise and s == "waiting"}  # (scenes alone, not known yet)
+    score = summary is not None and summary[0] + len(blocked) + len(waiting) == summary[1] - 1 and \
         (not blocked or "cannot be checked before that one passes" in out)
     return {"caught": status == "wrong", "attributed": status == "wrong" and not others, "hint": hint,
             "score": score, "status": status, "others": others, "shown": shown, "summary": summary,
