@@ -292,7 +292,9 @@ def scan(root):
 
 
 # Self-test snippets: (name, language, code, the findings expected as (line, var, what the use says)).
-TODAY = """  float depth = v_depth;
+# Today's: the main() of cascades.glsl as it was, from its view depth to its stub check.
+TODAY = """void main() {
+  float depth = v_depth;
   vec4 splits = vec4(u_splits[0], u_splits[1], u_splits[2], u_splits[3]);
 #ifdef WB_SELECT_MAP
   int i = cascadeByMap(v_world, u_cascades, u_count);
@@ -304,8 +306,12 @@ TODAY = """  float depth = v_depth;
     wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
     return;
   }
+}
 """
-TODAY_FIXED = """  int i = cascadeByInterval(depth, splits, u_count);
+CASES = [
+    ("today's cascades.glsl", "glsl", TODAY, [(9, "i", "an array index")]),
+    ("today's, fixed", "glsl", """void main() {
+  int i = cascadeByInterval(depth, splits, u_count);
   if (u_ready == 0 || i < 0) {
     writeTodo(albedo);
     return;
@@ -313,42 +319,96 @@ TODAY_FIXED = """  int i = cascadeByInterval(depth, splits, u_count);
   float w = i + 1 < u_count ? blendWeight(depth, u_splitNear[i], u_splits[i], u_band) : 0.0;
   if (wbIsTodo(w)) discard;
   float v = u_band / w;
-"""
-CASES = [
-    ("today's cascades.glsl", "glsl", "void main() {\n" + TODAY + "}\n", [(9, "i", "an array index")]),
-    ("today's, fixed", "glsl", "void main() {\n" + TODAY_FIXED + "}\n", []),
-    ("loop bound", "glsl", "void main() {\n  int n = cascadeByMap(p, m, 4);\n  for (int k = 0; k < n; ++k) a += 1.0;\n"
-     "  while (n > 0) --n;\n}\n", [(3, "n", "a loop bound"), (4, "n", "a loop bound")]),
-    ("loop bound, checked", "glsl", "void main() {\n  int n = cascadeByMap(p, m, 4);\n  if (n == -1) return;\n"
-     "  for (int k = 0; k < n; ++k) a += 1.0;\n}\n", []),
-    ("divisors", "glsl", "void main() {\n  float w = blendWeight(d, 0.0, 1.0, 0.1);\n  float a = 1.0 / w;\n  a /= (w + 1.0);\n"
-     "  int c = cascadeByInterval(d, s, 4);\n  int r = 7 % c;\n}\n",
-     [(3, "w", "a divisor"), (4, "w", "a divisor"), (6, "c", "a divisor")]),
-    ("divisors, checked", "glsl", "void main() {\n  float w = blendWeight(d, 0.0, 1.0, 0.1);\n  if (wbIsTodo(w))\n"
-     "    discard;\n  float a = 1.0 / w;\n  int c = cascadeByInterval(d, s, 4);\n  int r = c >= 0 ? 7 % c : 0;\n}\n", []),
-    ("calls inside uses", "glsl", "void main() {\n  float a = u_splits[cascadeByInterval(d, s, 4)];\n"
-     "  for (int k = 0; k < cascadeByMap(p, m, 4); ++k) a += 1.0;\n  a = a / blendWeight(d, 0.0, 1.0, 0.1);\n}\n",
-     [(2, "cascadeByInterval()", "an array index"), (3, "cascadeByMap()", "a loop bound"),
+}
+""", []),
+    ("loop bounds", "glsl", """void main() {
+  int n = cascadeByMap(p, m, 4);
+  for (int k = 0; k < n; ++k) a += 1.0;
+  while (n > 0) --n;
+}
+""", [(3, "n", "a loop bound"), (4, "n", "a loop bound")]),
+    ("loop bounds, checked", "glsl", """void main() {
+  int n = cascadeByMap(p, m, 4);
+  if (n == -1) return;
+  for (int k = 0; k < n; ++k) a += 1.0;
+}
+""", []),
+    ("divisors", "glsl", """void main() {
+  float w = blendWeight(d, 0.0, 1.0, 0.1);
+  float a = 1.0 / w;
+  a /= (w + 1.0);
+  int c = cascadeByInterval(d, s, 4);
+  int r = 7 % c;
+}
+""", [(3, "w", "a divisor"), (4, "w", "a divisor"), (6, "c", "a divisor")]),
+    ("divisors, checked", "glsl", """void main() {
+  float w = blendWeight(d, 0.0, 1.0, 0.1);
+  if (wbIsTodo(w))
+    discard;
+  float a = 1.0 / w;
+  int c = cascadeByInterval(d, s, 4);
+  int r = c >= 0 ? 7 % c : 0;
+}
+""", []),
+    ("calls inside uses", "glsl", """void main() {
+  float a = u_splits[cascadeByInterval(d, s, 4)];
+  for (int k = 0; k < cascadeByMap(p, m, 4); ++k) a += 1.0;
+  a = a / blendWeight(d, 0.0, 1.0, 0.1);
+}
+""", [(2, "cascadeByInterval()", "an array index"), (3, "cascadeByMap()", "a loop bound"),
       (4, "blendWeight()", "a divisor")]),
-    ("through a function", "glsl", "bool inMap(int i) { return v_light[i].x < 1.0; }\n"
-     "float lookup(int i) {\n  if (!inMap(i)) return 1.0;\n  return 0.5;\n}\nvoid main() {\n"
-     "  int i = cascadeByMap(p, m, 4);\n  float v = lookup(i);\n  if (i < 0) return;\n  v = lookup(i);\n}\n",
-     [(8, "i", "an array index via inMap() via lookup()")]),
-    ("only inside the if", "glsl", "void main() {\n  int i = cascadeByMap(p, m, 4);\n  if (i >= 0) {\n"
-     "    a = u_splits[i];\n  }\n  b = u_splits[i];\n}\n", [(6, "i", "an array index")]),
-    ("justified", "glsl", "void main() {\n  int i = cascadeByMap(p, m, 4);\n"
-     "  a = u_splits[i];  // stub-checked: the self-test says so\n  // stub-checked: and so\n  b = u_splits[i];\n"
-     "  c = u_splits[i];\n}\n", [(6, "i", "an array index")]),
-    ("C++ attempt, unchecked", "cpp", "bool castersOf(std::vector<bool>& drawn) {\n  std::vector<uint32_t> kept;\n"
-     '  attempt("10.H2", kept, [&] { return lab10::castersFor(c, v, boxes); });\n  for (uint32_t k : kept)\n'
-     "    drawn[k] = true;\n  return true;\n}\n", [(4, "kept", "a loop bound"), (5, "k", "an array index")]),
-    ("C++ attempt, as lab 10 has it", "cpp", "bool castersOf(std::vector<bool>& drawn) {\n"
-     "  std::vector<uint32_t> kept;\n"
-     '  if (!attempt("10.H2", kept, [&] { return lab10::castersFor(cascade, view, sliceNear, sliceFar, boxes); }))\n'
-     "    return false;\n  for (uint32_t k : kept)\n    if (k < drawn.size()) drawn[k] = true;\n  return true;\n}\n", []),
-    ("C++ flag", "cpp", "void f() {\n  std::vector<float> s;\n  const bool ok = attempt(\"10.1\", s, [&] { return "
-     "lab10::splitDistances(1, 2, 3, x, 0); });\n  if (!ok) return;\n  int n = 10 / int(s.size());\n  int m = 10 / n;\n}\n",
-     []),
+    ("through a function", "glsl", """bool inMap(int i) { return v_light[i].x < 1.0; }
+float lookup(int i) {
+  if (!inMap(i)) return 1.0;
+  return 0.5;
+}
+void main() {
+  int i = cascadeByMap(p, m, 4);
+  float v = lookup(i);
+  if (i < 0) return;
+  v = lookup(i);
+}
+""", [(8, "i", "an array index via inMap() via lookup()")]),
+    ("only inside the if", "glsl", """void main() {
+  int i = cascadeByMap(p, m, 4);
+  if (i >= 0) {
+    a = u_splits[i];
+  }
+  b = u_splits[i];
+}
+""", [(6, "i", "an array index")]),
+    ("justified", "glsl", """void main() {
+  int i = cascadeByMap(p, m, 4);
+  a = u_splits[i];  // stub-checked: the self-test says so
+  // stub-checked: and so
+  b = u_splits[i];
+  c = u_splits[i];
+}
+""", [(6, "i", "an array index")]),
+    ("C++ attempt, unchecked", "cpp", """bool castersOf(std::vector<bool>& drawn) {
+  std::vector<uint32_t> kept;
+  attempt("10.H2", kept, [&] { return lab10::castersFor(c, v, boxes); });
+  for (uint32_t k : kept)
+    drawn[k] = true;
+  return true;
+}
+""", [(4, "kept", "a loop bound"), (5, "k", "an array index")]),
+    ("C++ attempt, as lab 10 has it", "cpp", """bool castersOf(std::vector<bool>& drawn) {
+  std::vector<uint32_t> kept;
+  if (!attempt("10.H2", kept, [&] { return lab10::castersFor(cascade, view, sliceNear, sliceFar, boxes); }))
+    return false;
+  for (uint32_t k : kept)
+    if (k < drawn.size()) drawn[k] = true;
+  return true;
+}
+""", []),
+    ("C++ flag", "cpp", """void f() {
+  std::vector<float> s;
+  const bool ok = attempt("10.1", s, [&] { return lab10::splitDistances(1, 2, 3, x, 0); });
+  if (!ok) return;
+  int n = 10 / int(s.size());
+}
+""", []),
 ]
 
 
@@ -366,12 +426,12 @@ def self_test(root):
     try:  # today's file as it was, where git and that commit are here (not in a student's export)
         text = subprocess.run(["git", "-C", str(root), "show", f"{BROKEN_COMMIT}:{BROKEN_FILE}"], capture_output=True,
                               text=True, check=True).stdout
-        where = f"{BROKEN_FILE} at {BROKEN_COMMIT[:7]}"
+        where, expected = f"{BROKEN_FILE} at {BROKEN_COMMIT[:7]}", [(103, "i", "an array index")]
     except (OSError, subprocess.CalledProcessError):
-        text, where = "void main() {\n" + TODAY + "}\n", "the embedded copy of today's cascades.glsl"
+        text, where, expected = TODAY, "the embedded copy of today's cascades.glsl", CASES[0][3]
     src = Source(text, False)
-    found = [(line, var) for line, var, kind, _ in analyse(src, glsl, summarise([src], glsl)) if "index" in kind]
-    ok = bool(found) and all(var == "i" for _, var in found)
+    found = [(line, var, kind) for line, var, kind, _ in analyse(src, glsl, summarise([src], glsl))]
+    ok = found == expected
     failed += not ok
     print(f"  {'ok  ' if ok else 'FAIL'} {where}: {found or 'nothing found'}")
     print(f"stub_guard --self-test: {'every kind is found, and the checked forms pass' if not failed else 'FAILED'}")
