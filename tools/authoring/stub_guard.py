@@ -7,7 +7,8 @@ until 10.5 was written, and only on NVIDIA (Mesa compiled it).
   stub_guard.py [ROOT]        exit 1 naming each finding (file:line, the variable, the use)
   stub_guard.py --self-test   prove that each kind of use is found and the checked forms pass
 
-Scanned: labs/*/shaders/*, shaders/wb/* (GLSL); labs/*/main.cpp, common/shell/*.cpp (C++). The
+Scanned: labs/*/shaders/*, shaders/wb/* (GLSL); labs/*/main.cpp, common/shell/*.cpp (C++); the
+exercise files (the students' answers) are read for what their functions' parameters reach. The
 analysis is textual and line-ordered within a block. A variable is tainted when it is assigned from
 an exercise's call (GLSL: a function of labs/*/shaders/exercise*; C++: labNN::f of exercise.hpp, or
 the value `attempt("id", var, ...)` fills), or is the element of a range-for over one. A use is
@@ -265,9 +266,13 @@ def report(path, findings):
 
 
 def scan_group(root, files, calls, strings):
+    """The findings in `files`, but for the exercise files: their functions are the students' answers
+    (a correct pcss() divides by the depth of the blockers it has just found), read only for what
+    their parameters reach."""
     srcs = {f: Source(f.read_text(errors="replace"), strings) for f in files}
     summaries = summarise(srcs.values(), calls)
-    return [r for f, s in srcs.items() for r in report(f.relative_to(root).as_posix(), analyse(s, calls, summaries))]
+    return [r for f, s in srcs.items() if not f.name.startswith("exercise")
+            for r in report(f.relative_to(root).as_posix(), analyse(s, calls, summaries))]
 
 
 GLSL_FUNCTION = re.compile(r"^(?:float|int|uint|bool|void|[iu]?vec[234]|mat[234])\s+(\w+)\s*\(", re.M)
