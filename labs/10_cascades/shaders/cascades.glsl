@@ -67,6 +67,11 @@ float lookup(int i) {
 }
 #endif
 
+// A pixel whose exercise is still a stub: shown as such, never a faked shadow.
+void writeTodo(vec3 albedo) {
+  wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
+}
+
 // debug.cascades: red, green, blue, yellow.
 vec3 cascadeTint(int i) {
   return i == 0 ? vec3(1.0, 0.35, 0.35) : i == 1 ? vec3(0.35, 1.0, 0.35) : i == 2 ? vec3(0.35, 0.5, 1.0) : vec3(1.0, 1.0, 0.3);
@@ -100,15 +105,28 @@ void main() {
 #else
   int i = cascadeByInterval(depth, splits, u_count);
 #endif
+  // The stub's -1 is tested before i indexes anything: NVIDIA inlines the stub, folds the -1 into
+  // u_splitNear[-1] and rejects the whole shader (C1068), so lab 10 would not start until 10.5 is done.
+  if (u_ready == 0 || i < 0) {
+    writeTodo(albedo);
+    return;
+  }
+  // A wrong answer past the cascades is drawn shadowed, in solid magenta, never looked up out of
+  // bounds. (i > 3 as well: a constant past the arrays is folded and rejected like the -1.)
+  if (i >= u_count || i > 3) {
+    wbWriteOutputs(vec3(1.0, 0.0, 1.0), 0.0, v_world, facesLight);
+    return;
+  }
+  int next = min(i + 1, 3);  // i + 1 wherever it is used (w > 0), and never a constant past the arrays
   float w = i + 1 < u_count ? blendWeight(depth, u_splitNear[i], u_splits[i], u_band) : 0.0;
-  if (u_ready == 0 || i < 0 || wbIsTodo(w)) {  // a stub: show it, never fake a shadow
-    wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
+  if (wbIsTodo(w)) {
+    writeTodo(albedo);
     return;
   }
 #ifdef WB_SELECT_MAP
   if (depth >= u_splits[i]) w = 0.0;  // the map kept a finer cascade past its split: no band there
 #endif
-  if (w > 0.0 && !inMap(i + 1)) w = 0.0;  // a band point outside the next map: this one alone
+  if (w > 0.0 && !inMap(next)) w = 0.0;  // a band point outside the next map: this one alone
 #ifdef WB_DENSITY  // the aliasing measure: how many texels of cascade i one pixel spans
   // The screen derivatives of the world position, carried through cascade i's (affine) matrix: the
   // derivatives of v_light[i] itself would mix cascades where a 2x2 quad straddles a split, and
@@ -125,18 +143,18 @@ void main() {
 #else
 #ifdef WB_SMOOTH_BLEND  // both cascades, mixed
   float visibility = lookup(i);
-  if (w > 0.0) visibility = mix(visibility, lookup(i + 1), w);
+  if (w > 0.0) visibility = mix(visibility, lookup(next), w);
 #else  // dithered: the next cascade where w beats a per-pixel threshold (interleaved gradient noise)
   float threshold = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
-  float visibility = lookup(w > threshold ? i + 1 : i);
+  float visibility = lookup(w > threshold ? next : i);
 #endif
   if (wbIsTodo(visibility)) {  // csm.filter=esm, vsm or evsm before that lab is done
-    wbWriteOutputs(mix(albedo * 0.5, wbTodoPattern(gl_FragCoord.xy), 0.35), WB_TODO, v_world, true);
+    writeTodo(albedo);
     return;
   }
   vec3 colour = wbShade(albedo, n, toLight, vec3(wbLightReach(v_world)), visibility);
 #ifdef WB_TINT
-  colour *= mix(cascadeTint(i), cascadeTint(min(i + 1, 3)), w);
+  colour *= mix(cascadeTint(i), cascadeTint(next), w);
 #endif
 #ifdef WB_REGION
   bool counted = inRegion(i, depth);
