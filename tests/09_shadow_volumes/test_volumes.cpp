@@ -199,7 +199,7 @@ static std::string opName(unsigned op) {
       return "not a stencil operation (" + std::to_string(op) + ")";
   }
 }
-TEST(Lab09, Ex09_4_ZPassCountsFacesInFrontOfTheScene) {
+TEST(Lab09, Ex09_4_ZPassCountsFacesInFrontOfTheSurface) {
   lab09::StencilSetup s;
   WB_TRY_EXERCISE(s = fromNumbers(WB_CALL(asNumbers(lab09::zPassSetup()))));
   EXPECT_EQ(s.front.depthPass, unsigned(GL_INCR_WRAP))
@@ -216,7 +216,7 @@ TEST(Lab09, Ex09_4_ZPassCountsFacesInFrontOfTheScene) {
   EXPECT_EQ(int(s.caps), 0) << "WRONG: z-pass needs no caps: a ray from the eye enters and leaves through the sides";
 }
 
-TEST(Lab09, Ex09_5_ZFailCountsFacesBehindTheSceneWithCaps) {
+TEST(Lab09, Ex09_5_ZFailCountsFacesBehindTheSurfaceWithCaps) {
   lab09::StencilSetup s;
   WB_TRY_EXERCISE(s = fromNumbers(WB_CALL(asNumbers(lab09::zFailSetup()))));
   EXPECT_EQ(s.back.depthFail, unsigned(GL_INCR_WRAP))

@@ -50,7 +50,8 @@ std::vector<wb::test::ManifestEntry> readManifest() {
   return out;
 }
 
-// The grader's convention: a test that draws a scene has Scene or Measured in its name.
+// The grader's convention (tools/grading/outcomes.py): a test that draws a scene has Scene or Measured
+// in its name, and no other test has (tests/framework/test_names_test.py keeps it so).
 bool drawsScene(const std::string& test) {
   return test.find("Scene") != std::string::npos || test.find("Measured") != std::string::npos;
 }
