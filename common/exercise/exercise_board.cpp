@@ -14,13 +14,13 @@ namespace fs = std::filesystem;
 namespace wb {
 namespace {
 
-// Whether exercise file `text` compiles in a kernel (one that calls none of its functions).
-bool kernelCompiles(const std::string& text, const fs::path& origin, const std::vector<GLuint>& textures) {
+// Why exercise file `text` does not compile in a kernel (one that calls none of its functions), or "".
+std::string kernelError(const std::string& text, const fs::path& origin, const std::vector<GLuint>& textures) {
   try {
     runGlslKernel(text, origin, "", 0, 1, {}, textures);
-    return true;
-  } catch (const Error&) {
-    return false;
+    return "";
+  } catch (const Error& e) {
+    return e.what();
   }
 }
 
@@ -31,6 +31,14 @@ std::string handedOutText(const std::string& file) {
   } catch (const Error&) {
     return "";
   }
+}
+
+// Every exercise chunk's id of `text` but `id`'s (the helpers above the first marker stay).
+std::set<std::string> otherThan(const std::string& text, const std::string& id) {
+  std::set<std::string> others;
+  for (const auto& chunk : splitChunks(text))
+    if (!chunk.first.empty() && chunk.first != id) others.insert(chunk.first);
+  return others;
 }
 
 }  // namespace
@@ -122,7 +130,6 @@ void ExerciseBoard::probe() {
       probedFiles_[path] = fs::last_write_time(path);
       const std::string text = readFile(path);
       std::set<std::string> broken;          // the exercises whose chunks do not compile
-      std::string error;                     // and why
       const int count = int(probes.size());  // (a lambda may not name a structured binding before C++20)
       auto run = [&](const std::string& t) {
         return runGlslKernel(t, path, body, count, 1, {}, {dummy.id(), cube.id()});
@@ -131,21 +138,22 @@ void ExerciseBoard::probe() {
       try {
         r = run(text);
         lastGood_[path] = text;
-      } catch (const Error& e) {
+      } catch (const Error&) {
         // A chunk that does not compile is its exercise's error alone: found by compiling each chunk
         // alone (never from the log), the others are probed with its last good text in its place,
         // as hot reload draws them (shader.hpp), or with the stub's before anything compiled.
         const std::string fallback = lastGood_.count(path) ? lastGood_[path] : handedOutText(file);
-        broken = chunksThatDoNotCompile(text, fallback, [&](const std::string& t) {
-          return kernelCompiles(t, path, {dummy.id(), cube.id()});
-        });
+        const std::vector<GLuint> textures = {dummy.id(), cube.id()};
+        broken = chunksThatDoNotCompile(text, fallback,
+                                        [&](const std::string& t) { return kernelError(t, path, textures).empty(); });
         if (broken.empty()) throw;
-        error = e.what();
         r = run(withChunksFrom(text, fallback, broken));
       }
       for (size_t k = 0; k < probes.size(); ++k)
-        if (broken.count(probes[k]->id))
-          set(probes[k]->id, ExerciseState::Failed, error);
+        if (const std::string& id = probes[k]->id; broken.count(id))  // its own messages: it alone, the rest stubs
+          set(id, ExerciseState::Failed,
+              kernelError(withChunksFrom(text, handedOutText(file), otherThan(text, id)), path,
+                          {dummy.id(), cube.id()}));
         else
           set(probes[k]->id, isTodo(r[k].x) ? ExerciseState::NotImplemented : ExerciseState::Implemented,
               isTodo(r[k].x) ? "the GLSL function still returns WB_TODO" : "");

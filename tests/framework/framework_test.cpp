@@ -309,6 +309,11 @@ TEST_F(GlTest, ExerciseBoardMarksOnlyTheChunkThatDoesNotCompile) {
   touch(file, broken, 2);
   board.probe();
   EXPECT_EQ(board.stateOf("01.4"), wb::ExerciseState::Failed);
+  const int line = 1 + int(std::count(broken.begin(), broken.begin() + long(brace), '\n')) + 1;
+  for (const auto& e : board.exercises()) {  // its own message: the line of the typo
+    if (e.id != "01.4") continue;
+    EXPECT_NE(e.message.find("exercise.glsl:" + std::to_string(line) + ": error"), std::string::npos) << e.message;
+  }
   EXPECT_NE(board.stateOf("01.3"), wb::ExerciseState::Failed) << "01.3's chunk compiles: it is not 01.4's error";
   EXPECT_NE(board.stateOf("01.5"), wb::ExerciseState::Failed) << "01.5's chunk compiles: it is not 01.4's error";
   unsetenv("WB_SHADER_OVERLAY");
