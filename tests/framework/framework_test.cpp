@@ -654,7 +654,9 @@ TEST_F(GlTest, PrefilterBlurMatchesTheSameFilterOnTheCpu) {
 
 // The grader re-grades a C++ exercise alone when a failure came from a test that runs the lab's app
 // (tools/grading/grade.py, runs_app): it finds those tests by name, so every test that runs the app must
-// have Scene or Measured in its name.
+// have Scene or Measured in its name; and check tells an exercise's own tests from its scenes the same
+// way (a hunt measured by scenes alone waits on the others), so the words come only as the first word
+// after the exercise ("Ex09_4_...InFrontOfTheScene", a kernel test, was taken for a scene).
 TEST(Grading, TestsThatRunTheAppSaySceneOrMeasured) {
   const std::regex test(R"(^TEST(_F)?\(\s*\w+\s*,\s*(\w+)\s*\))");
   std::vector<fs::path> files;
@@ -671,7 +673,13 @@ TEST(Grading, TestsThatRunTheAppSaySceneOrMeasured) {
     std::string name;
     for (std::string line; std::getline(in, line);) {
       std::smatch m;
-      if (std::regex_search(line, m, test)) name = m[2];
+      if (std::regex_search(line, m, test)) {
+        name = m[2];
+        const std::string rest = std::regex_replace(name, std::regex(R"(^Ex\d\d_(\d+|x|H\d+)_)"), "");
+        const bool says = name.find("Scene") != std::string::npos || name.find("Measured") != std::string::npos;
+        EXPECT_TRUE(!says || rest.rfind("Scene", 0) == 0 || rest.rfind("Measured", 0) == 0)
+            << f << ": test " << name << ": Scene or Measured only as the first word after the exercise";
+      }
       for (const char* call : {"expectSceneMatchesGolden", "measureScene", "runLabOutput"})
         if (line.find(call) != std::string::npos && !name.empty()) {
           ++checked;
