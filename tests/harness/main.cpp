@@ -144,12 +144,12 @@ class CheckListener : public ::testing::EmptyTestEventListener {
       signed_.insert(test_);
       std::ofstream(signatures_, std::ios::app) << nlohmann::json{{"test", test_}, {"value", *d.got}}.dump() << "\n";
     }
-    // Keep the most serious diagnosis of the exercise: ERROR > WRONG > blocked > NOT IMPLEMENTED. A test
-    // of its own that finds it WRONG says more than a scene blocked by another exercise, and is what
-    // the grader, drawing the others with the reference, finds too.
+    // Keep the most serious diagnosis of the exercise: ERROR > WRONG > NOT IMPLEMENTED > blocked. A test
+    // that finds it WRONG, or still the stub, says more than a scene blocked by another exercise, and
+    // is what the grader, drawing the others with the reference, finds too.
     auto rank = [](const wb::test::Diagnosis& x) {
-      if (x.headline.rfind("ERROR: blocked by", 0) == 0) return 1.5;
-      return x.verdict == "ERROR" ? 3.0 : x.verdict == "NOT IMPLEMENTED" ? 1.0 : 2.0;
+      if (x.headline.rfind("ERROR: blocked by", 0) == 0) return 1.0;
+      return x.verdict == "ERROR" ? 3.0 : x.verdict == "NOT IMPLEMENTED" ? 1.5 : 2.0;
     };
     static const std::regex blockedRe(R"(^ERROR: blocked by ([0-9.xH, ]+):)"), kListSeparator(", ");
     std::smatch by;
