@@ -22,7 +22,6 @@ Python 3.7 or newer, standard library only.
 """
 import argparse
 import datetime
-import hashlib
 import io
 import json
 import os
@@ -34,6 +33,7 @@ import tarfile
 import tempfile
 
 import ctest_rules
+from gpu_unpack import sha256  # (one checksum: the pack writes it, the target checks it)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
@@ -354,14 +354,6 @@ def write_pack_files(out, build, root, cache, tests, names, libs, glibc, args):
         print("gpu_check pack: note: this build is not configured with WB_EXPECT_STUBS=ON (the 'ci' preset): its "
               "student tests fail on the stubs by design, and it has no hunt tests")
     print("gpu_check pack: on the GPU machine: %s/gpu_check.sh run" % os.path.basename(out))
-
-
-def sha256(path):
-    h = hashlib.sha256()
-    with open(path, "rb") as f:
-        for block in iter(lambda: f.read(1 << 20), b""):
-            h.update(block)
-    return h.hexdigest()
 
 
 if __name__ == "__main__":

@@ -94,7 +94,7 @@ def choose(orig, at):
     return _tmp_twin(orig)
 
 
-def _sha256(path):
+def sha256(path):
     h = hashlib.sha256()
     with open(path, "rb") as f:
         for block in iter(lambda: f.read(1 << 20), b""):
@@ -163,7 +163,7 @@ def unpack(pack, manifest, at=None, fresh=False):
         print("gpu_check: the tree is unpacked at %s already" % tree.root, flush=True)
         return tree
     archive = os.path.join(pack, manifest["archive"])
-    if _sha256(archive) != manifest["sha256"]:
+    if sha256(archive) != manifest["sha256"]:
         sys.exit("gpu_check: %s is damaged (its checksum is not the manifest's); copy the pack again" % archive)
     places = [tree.root] + ([] if tree.build.startswith(tree.root + "/") else [tree.build])
     for place in places:
