@@ -36,7 +36,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path scratch(const std::string& name) {
-  fs::path dir = fs::path(wb::variant::kOutputDir) / name;
+  fs::path dir = wb::test::testOutputDir() / name;  // (WB_TEST_OUTPUT_DIR: a second run's own folder)
   fs::create_directories(dir);
   return dir;
 }

@@ -7,10 +7,12 @@
 # Usage: student_edition_attribution_test.sh BUILD_DIR
 set -euo pipefail
 build=${1:?usage: student_edition_attribution_test.sh BUILD_DIR}
+# (its own folder under a log stand-in: ctest runs both variants of this test at once)
+outs="$build/test-output/student-edition-attribution${WB_SHADER_LOG_AS:+-$WB_SHADER_LOG_AS}"
 failures=0
 for mutant in 09_shadow_volumes/w_ignored:09.2 10_cascades/interval_off_by_one:10.5; do
   lab=${mutant%%/*} name=${mutant#*/} && name=${name%%:*} id=${mutant##*:} nn=${lab:0:2}
-  out="$build/test-output/student-edition-attribution/$nn-$name" && rm -rf "$out" && mkdir -p "$out"
+  out="$outs/$nn-$name" && rm -rf "$out" && mkdir -p "$out"
   WB_TEST_OUTPUT_DIR="$out" WB_SUBMISSION_DIR="$build/mutants/$lab/$name" \
     "$build/lab${nn}_solution_tests" --as-student-edition --check >"$out/check.log" 2>&1 || true
   wrong=$(awk '$1 ~ /^[0-9][0-9]\.([0-9x]|H[0-9])$/ && $2 == "wrong" { print $1 }' "$out/check.log" | tr '\n' ' ')
@@ -35,7 +37,7 @@ done
 # summary counts the others that have tests of their own, and the bug hunts, measured by their scenes
 # alone, wait on 02.5: neither passed nor failed.
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-out="$build/test-output/student-edition-attribution/02-missing-semicolon" && rm -rf "$out" && mkdir -p "$out/sub/shaders"
+out="$outs/02-missing-semicolon" && rm -rf "$out" && mkdir -p "$out/sub/shaders"
 sed 's/\(return worldPos + normal \* (scale \* texelWorld \* slope)\);/\1/' \
   "$root/solutions/02_bias/shaders/exercise.glsl" >"$out/sub/shaders/exercise.glsl"
 if cmp -s "$root/solutions/02_bias/shaders/exercise.glsl" "$out/sub/shaders/exercise.glsl"; then
