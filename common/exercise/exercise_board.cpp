@@ -7,22 +7,13 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <map>
 #include <set>
 
 namespace fs = std::filesystem;
 
 namespace wb {
 namespace {
-
-// Why exercise file `text` does not compile in a kernel (one that calls none of its functions), or "".
-std::string kernelError(const std::string& text, const fs::path& origin, const std::vector<GLuint>& textures) {
-  try {
-    runGlslKernel(text, origin, "", 0, 1, {}, textures);
-    return "";
-  } catch (const Error& e) {
-    return e.what();
-  }
-}
 
 // The lab's shaders/`file` as handed out, or "" (then nothing is swapped).
 std::string handedOutText(const std::string& file) {
@@ -31,14 +22,6 @@ std::string handedOutText(const std::string& file) {
   } catch (const Error&) {
     return "";
   }
-}
-
-// Every exercise chunk's id of `text` but `id`'s (the helpers above the first marker stay).
-std::set<std::string> otherThan(const std::string& text, const std::string& id) {
-  std::set<std::string> others;
-  for (const auto& chunk : splitChunks(text))
-    if (!chunk.first.empty() && chunk.first != id) others.insert(chunk.first);
-  return others;
 }
 
 }  // namespace
@@ -129,8 +112,9 @@ void ExerciseBoard::probe() {
       const fs::path path = findShaderFile(file, shaderSearchPath());
       probedFiles_[path] = fs::last_write_time(path);
       const std::string text = readFile(path);
-      std::set<std::string> broken;          // the exercises whose chunks do not compile
-      const int count = int(probes.size());  // (a lambda may not name a structured binding before C++20)
+      std::set<std::string> broken;                 // the exercises whose chunks do not compile
+      std::map<std::string, std::string> messages;  // and each one's compiler messages, compiled alone
+      const int count = int(probes.size());         // (a lambda may not name a structured binding before C++20)
       auto run = [&](const std::string& t) {
         return runGlslKernel(t, path, body, count, 1, {}, {dummy.id(), cube.id()});
       };
@@ -143,17 +127,17 @@ void ExerciseBoard::probe() {
         // alone (never from the log), the others are probed with its last good text in its place,
         // as hot reload draws them (shader.hpp), or with the stub's before anything compiled.
         const std::string fallback = lastGood_.count(path) ? lastGood_[path] : handedOutText(file);
-        const std::vector<GLuint> textures = {dummy.id(), cube.id()};
-        broken = chunksThatDoNotCompile(text, fallback,
-                                        [&](const std::string& t) { return kernelError(t, path, textures).empty(); });
+        std::map<std::string, std::string> errors;  // each text compiled, and why it did not
+        broken = chunksThatDoNotCompile(text, fallback, [&](const std::string& t) {
+          return (errors[t] = glslKernelError(t, path, "", 1, {dummy.id(), cube.id()})).empty();
+        });
         if (broken.empty()) throw;
         r = run(withChunksFrom(text, fallback, broken));
+        for (const auto& id : broken) messages[id] = errors[chunkAlone(text, fallback, id)];  // its own alone
       }
       for (size_t k = 0; k < probes.size(); ++k)
-        if (const std::string& id = probes[k]->id; broken.count(id))  // its own messages: it alone, the rest stubs
-          set(id, ExerciseState::Failed,
-              kernelError(withChunksFrom(text, handedOutText(file), otherThan(text, id)), path,
-                          {dummy.id(), cube.id()}));
+        if (broken.count(probes[k]->id))
+          set(probes[k]->id, ExerciseState::Failed, messages[probes[k]->id]);
         else
           set(probes[k]->id, isTodo(r[k].x) ? ExerciseState::NotImplemented : ExerciseState::Implemented,
               isTodo(r[k].x) ? "the GLSL function still returns WB_TODO" : "");

@@ -96,20 +96,27 @@ std::string withChunksFrom(const std::string& current, const std::string& lastGo
   return out;
 }
 
-std::set<std::string> chunksThatDoNotCompile(const std::string& mine, const std::string& stub,
-                                             const CompilesFn& compiles) {
-  // The exercise chunks the stub has too (only those can be swapped), by ids of an exercise's shape:
-  // "// EXERCISE 08.x" quoted in a comment above the first marker is no exercise.
+// The exercise chunks of `mine` the stub has too (only those can be swapped), by ids of an exercise's
+// shape: "// EXERCISE 08.x" quoted in a comment above the first marker is no exercise.
+static std::set<std::string> swappable(const std::string& mine, const std::string& stub) {
   auto isId = [](const std::string& id) { return !id.empty() && id.find_first_not_of("0123456789.xH") == id.npos; };
   std::set<std::string> ids;
   for (const auto& chunk : splitChunks(mine))
     if (isId(chunk.first) && findMarker(stub, chunk.first) != std::string::npos) ids.insert(chunk.first);
+  return ids;
+}
+
+std::string chunkAlone(const std::string& mine, const std::string& stub, const std::string& id) {
+  std::set<std::string> others = swappable(mine, stub);
+  others.erase(id);
+  return withChunksFrom(mine, stub, others);
+}
+
+std::set<std::string> chunksThatDoNotCompile(const std::string& mine, const std::string& stub,
+                                             const CompilesFn& compiles) {
   std::set<std::string> broken;
-  for (const auto& id : ids) {
-    std::set<std::string> others = ids;
-    others.erase(id);
-    if (!compiles(withChunksFrom(mine, stub, others))) broken.insert(id);
-  }
+  for (const auto& id : swappable(mine, stub))
+    if (!compiles(chunkAlone(mine, stub, id))) broken.insert(id);
   if (broken.empty() || !compiles(withChunksFrom(mine, stub, broken))) return {};
   return broken;
 }

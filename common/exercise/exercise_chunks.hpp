@@ -39,6 +39,10 @@ std::set<std::string> changedChunks(const std::string& before, const std::string
 /// compiler's messages.
 std::string withChunksFrom(const std::string& current, const std::string& lastGood, const std::set<std::string>& ids);
 
+/// `mine` with every other exercise's chunk taken from `stub`: how chunksThatDoNotCompile() compiles
+/// exercise `id` alone (only chunks the stub has, of an exercise id's shape, are swapped).
+std::string chunkAlone(const std::string& mine, const std::string& stub, const std::string& id);
+
 /// Whether a whole exercise file compiles, as some program or kernel reads it (the caller's GL).
 using CompilesFn = std::function<bool(const std::string& text)>;
 

@@ -69,9 +69,10 @@ class ExerciseSourceRules : public SourceRules {
   }
 
   // Each student's file alone (chunksThatDoNotCompile against the file as handed out). One answer
-  // per file text: every program that includes the file would be asked the same.
+  // per file's text, kept for its latest text: every program that includes the file would be asked
+  // the same.
   std::string blame(const std::vector<fs::path>& files, const BuildsFn& builds) const override {
-    static std::map<std::pair<fs::path, std::string>, std::set<std::string>> known;
+    static std::map<fs::path, std::pair<std::string, std::set<std::string>>> known;  // file -> (text, answer)
     std::set<std::string> all;
     for (const auto& file : files) {
       if (!guardsLoops(file)) continue;
@@ -81,10 +82,11 @@ class ExerciseSourceRules : public SourceRules {
       } catch (const std::exception&) {
         continue;  // (no stub to compare with: nothing to name)
       }
-      const auto key = std::make_pair(file, mine);
-      if (!known.count(key))
-        known[key] = chunksThatDoNotCompile(mine, stub, [&](const std::string& t) { return builds({{file, t}}); });
-      all.insert(known[key].begin(), known[key].end());
+      if (const auto cached = known.find(file); cached == known.end() || cached->second.first != mine)
+        known[file] = {mine, chunksThatDoNotCompile(mine, stub, [&](const std::string& t) {
+                         return builds({{file, t}});
+                       })};
+      all.insert(known[file].second.begin(), known[file].second.end());
     }
     return all.empty() ? "" : culpritLine(all);
   }

@@ -203,6 +203,16 @@ std::vector<glm::vec4> runGlslKernel(const std::string& functions, const fs::pat
   return runGlslKernelWithSamplers(functions, origin, body, count, stride, inputs, typed);
 }
 
+std::string glslKernelError(const std::string& functions, const fs::path& origin, const std::string& body, int stride,
+                            const std::vector<GLuint>& textures) {
+  try {
+    runGlslKernel(functions, origin, body, 0, stride, {}, textures);
+    return "";
+  } catch (const Error& e) {
+    return e.what();
+  }
+}
+
 namespace {
 double g_lastKernelMs = 0.0;
 }  // namespace

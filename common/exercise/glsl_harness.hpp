@@ -82,6 +82,11 @@ std::vector<glm::vec4> runGlslKernel(const std::string& functions, const std::fi
                                      const std::string& body, int count, int stride,
                                      const std::vector<glm::vec4>& inputs, const std::vector<GLuint>& textures = {});
 
+/// Why `functions` would not compile in a kernel with `body` (which runs none of it: nothing is
+/// drawn), or "" when it compiles: compile-based isolation's compiler (exercise_chunks.hpp).
+std::string glslKernelError(const std::string& functions, const std::filesystem::path& origin,
+                            const std::string& body = "", int stride = 1, const std::vector<GLuint>& textures = {});
+
 /// The time of the last runGlslKernel() dispatch, in milliseconds (to glFinish, on the clock):
 /// the judge holds a student's kernel against the reference's to catch endless loops, which
 /// the loop guard (loop_guard.hpp) cuts off after 50000 steps instead of hanging.

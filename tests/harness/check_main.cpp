@@ -116,9 +116,8 @@ int main(int argc, char** argv) {
     return usage("expected a two-digit lab number such as 01, got '" + a[0] + "'");
   std::map<std::string, std::string> opt;
   for (size_t k = 1; k < a.size(); k += 2) {
-    const bool known =
-        a[k] == "--root" || a[k] == "--tests" || a[k] == "--judge" || a[k] == "--tape" || a[k] == "--html" ||
-                       a[k] == "--submission";
+    const bool known = a[k] == "--root" || a[k] == "--tests" || a[k] == "--judge" || a[k] == "--tape" ||
+                       a[k] == "--html" || a[k] == "--submission";
     if (!known) return usage("unknown option '" + a[k] + "'");
     if (k + 1 >= a.size()) return usage(a[k] + " needs a value");
     opt[a[k]] = a[k + 1];

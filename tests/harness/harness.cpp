@@ -108,14 +108,8 @@ static std::vector<glm::vec4> runIsolatedKernel(const std::string& id, const std
     // (With the reference's other chunks the error is this one's; without a stub nothing can be swapped.)
     if (*variant::kSolutionDir || !fs::exists(handedOutShaderFile(file))) throw;
     stub = readFile(handedOutShaderFile(file));
-    broken = chunksThatDoNotCompile(text, stub, [&](const std::string& t) {
-      try {
-        runGlslKernel(t, origin, body, 0, stride, {}, ids);
-        return true;
-      } catch (const Error&) {
-        return false;
-      }
-    });
+    broken = chunksThatDoNotCompile(
+        text, stub, [&](const std::string& t) { return glslKernelError(t, origin, body, stride, ids).empty(); });
     if (broken.empty() || broken.count(id)) throw;
   }
   auto got = runGlslKernel(withChunksFrom(text, stub, broken), origin, body, count, stride, inputs, ids);

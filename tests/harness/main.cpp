@@ -51,7 +51,7 @@ std::vector<wb::test::ManifestEntry> readManifest() {
 }
 
 // The grader's convention (tools/grading/outcomes.py): a test that draws a scene has Scene or Measured
-// in its name, and no other test has (tests/framework/test_names_test.py keeps it so).
+// in its name, and no other test has (framework.Grading.TestsThatRunTheAppSaySceneOrMeasured keeps it so).
 bool drawsScene(const std::string& test) {
   return test.find("Scene") != std::string::npos || test.find("Measured") != std::string::npos;
 }
@@ -92,15 +92,16 @@ std::string summaryLine(int done, size_t total, int waiting, const std::vector<s
   if (waiting)
     line += " (" + std::to_string(waiting) + " by their own tests: the grader draws their scenes with the " +
             "reference for the others, and gives them their points if those pass)";
-  if (!pending.empty()) {
-    std::string ids;
-    for (const auto& id : pending) ids += (ids.empty() ? "" : ", ") + id;
-    line += "; " + ids + (pending.size() == 1 ? " is" : " are") + " measured by scenes alone, which wait on " +
-            "other exercises: neither passed nor failed yet";
-  }
+  auto joined = [](const std::vector<std::string>& ids) {
+    std::string all;
+    for (const auto& id : ids) all += (all.empty() ? "" : ", ") + id;
+    return all;
+  };
+  if (!pending.empty())
+    line += "; " + joined(pending) + (pending.size() == 1 ? " is" : " are") +
+            " measured by scenes alone, which wait on other exercises: neither passed nor failed yet";
   if (!blocked.empty()) {
-    std::string ids;
-    for (const auto& id : blocked) ids += (ids.empty() ? "" : ", ") + id;
+    const std::string ids = joined(blocked);
     const bool one = blocked.size() == 1;
     line += std::string("; ") + ids + (one ? " is" : " are") + " blocked by another exercise and cannot be " +
             "checked before that one passes (the grader checks " + (one ? "it" : "them") + " with the reference " +
