@@ -55,23 +55,22 @@ std::vector<uint8_t> shadowRim(const FloatImage& exact, const std::vector<glm::v
   return rim;
 }
 
-// The truly shadowed measured pixels with a lit measured 4-neighbour.
-long outlinePixels(const FloatImage& exact, const std::vector<glm::vec4>& positions) {
+}  // namespace
+
+std::vector<uint8_t> outlineMask(const FloatImage& exact, const std::vector<glm::vec4>& positions) {
   const int w = exact.width, h = exact.height;
   auto state = [&](int x, int y) -> int {  // -1 outside the frame or where nothing is measured
     if (x < 0 || y < 0 || x >= w || y >= h) return -1;
     const size_t i = size_t(y) * size_t(w) + size_t(x);
     return std::isnan(exact.pixels[i]) || positions[i].w <= 0 ? -1 : exact.pixels[i] < 0.5f;
   };
-  long outline = 0;
+  std::vector<uint8_t> outline(exact.pixels.size());
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      outline += state(x, y) == 1 &&
-                 (state(x - 1, y) == 0 || state(x + 1, y) == 0 || state(x, y - 1) == 0 || state(x, y + 1) == 0);
+      outline[size_t(y) * size_t(w) + size_t(x)] = state(x, y) == 1 && (state(x - 1, y) == 0 || state(x + 1, y) == 0 ||
+                                                                        state(x, y - 1) == 0 || state(x, y + 1) == 0);
   return outline;
 }
-
-}  // namespace
 
 FloatImage exactVisibility(const RayScene& rays, const Light& light, int width, int height,
                            const std::vector<glm::vec4>& positions) {
@@ -110,7 +109,7 @@ VisibilityMetrics compareVisibility(const FloatImage& rendered, const FloatImage
       ++m.shadowedPixels, m.leakPixels += wrong, m.shadowLight += std::clamp(double(r), 0.0, 1.0);
     m.rimPixels += rim[i], m.wrongOutsideRim += wrong && !rim[i];
   }
-  m.outlinePixels = outlinePixels(exact, positions);
+  for (uint8_t o : outlineMask(exact, positions)) m.outlinePixels += o;
   return m;
 }
 

@@ -20,6 +20,10 @@ namespace wb {
 FloatImage exactVisibility(const RayScene& rays, const Light& light, int width, int height,
                            const std::vector<glm::vec4>& positions);
 
+/// 1 for each truly shadowed light-facing pixel beside a lit one (a 4-neighbour): the exact shadow's
+/// outline, one pixel wide, as VisibilityMetrics::outlinePixels counts it.
+std::vector<uint8_t> outlineMask(const FloatImage& exact, const std::vector<glm::vec4>& positions);
+
 /// How a rendered visibility buffer compares with the exact one.
 struct VisibilityMetrics {
   long litPixels = 0;        ///< light-facing pixels the light really reaches

@@ -3,6 +3,7 @@
 #include "common/base/error.hpp"
 #include "common/base/strf.hpp"
 #include "common/shadows/shadow_map.hpp"
+#include "common/truth/texel_footprint.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -36,6 +37,7 @@ nlohmann::json MeasureResult::toJson() const {
                       {"shadow_area_ratio", metrics.areaRatio()},
                       {"rim_pixels", metrics.rimPixels},
                       {"outline_pixels", metrics.outlinePixels},
+                      {"outline_texel_pixels", outlineTexelPixels},
                       {"wrong_outside_rim_percent", 100 * metrics.wrongOutsideRimRate()},
                       {"contact_gap_texels", nullptr},
                       {"pcf_diff_percent", nullptr},
@@ -166,6 +168,7 @@ MeasureResult Measurement::measure(const MeasureInput& in) {
   const FloatImage exact = exactVisibility(*rays_, light, w, h, positions);
   MeasureResult r;
   r.metrics = compareVisibility(rendered, exact, positions);
+  r.outlineTexelPixels = outlineTexelPixels(in.light, positions, w, h, outlineMask(exact, positions));
   for (float v : rendered.pixels) r.todoPixels += isTodo(v);  // a stub's pattern
   const std::string why = whyNotOrthographic2D(in.light);
   if (why.empty())

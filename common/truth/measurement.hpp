@@ -28,6 +28,9 @@ struct MeasureResult {
   SeamError seams;                     ///< a cube map's seams against the rest (pixels = 0 for other maps)
   std::string notes;                   ///< why a measurement was skipped, if one was
   long todoPixels = 0;                 ///< pixels showing a stub's WB_TODO: the numbers mean nothing yet
+  /// The sum, over the exact shadow's outline, of one map texel's size in pixels there
+  /// (outlineTexelPixels): how far the map alone may move the drawn area (0 without a map).
+  double outlineTexelPixels = 0;
   /// One half of a split-screen frame, measured on its own.
   struct Half {
     std::string setting;            ///< "key=value" that half shows

@@ -1,0 +1,89 @@
+#include "common/truth/texel_footprint.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wb {
+namespace {
+
+// Where `p` falls in the map of `viewProj` in texels, or false when it lies outside its clip box.
+bool toTexels(const glm::mat4& viewProj, int size, const glm::vec3& p, glm::dvec2& texel) {
+  const glm::vec4 clip = viewProj * glm::vec4(p, 1.0f);
+  if (clip.w <= 0) return false;
+  const glm::dvec3 ndc = glm::dvec3(clip) / double(clip.w);
+  texel = (glm::dvec2(ndc) * 0.5 + 0.5) * double(size);
+  return std::abs(ndc.x) <= 1 && std::abs(ndc.y) <= 1 && std::abs(ndc.z) <= 1;
+}
+
+// The world-space step to the pixel's neighbour along one axis (dx, dy): the nearer of the two
+// sides on a measured surface, so that an outline beside another surface's edge keeps its own
+// plane; false where neither side is measured.
+bool step(const std::vector<glm::vec4>& positions, int width, int height, int x, int y, int dx, int dy,
+          glm::vec3& out) {
+  const glm::vec3 p(positions[size_t(y) * size_t(width) + size_t(x)]);
+  bool found = false;
+  for (int sign : {1, -1}) {
+    const int u = x + sign * dx, v = y + sign * dy;
+    if (u < 0 || v < 0 || u >= width || v >= height) continue;
+    const glm::vec4& q = positions[size_t(v) * size_t(width) + size_t(u)];
+    if (q.w == 0) continue;
+    const glm::vec3 d = float(sign) * (glm::vec3(q) - p);
+    if (!found || glm::length(d) < glm::length(out)) out = d, found = true;
+  }
+  return found;
+}
+
+// One texel of map `k` on screen at world point `p`, whose screen neighbours lie `ex`, `ey` away.
+double footprint(const LightView& light, size_t k, const glm::vec3& p, const glm::vec3& ex, const glm::vec3& ey) {
+  glm::dvec2 t, tx, ty;
+  if (!toTexels(light.viewProj[k], light.size, p, t)) return 0;
+  toTexels(light.viewProj[k], light.size, p + ex, tx), toTexels(light.viewProj[k], light.size, p + ey, ty);
+  const glm::dvec2 a = tx - t, b = ty - t;  // the pixel → texel Jacobian's columns
+  const double sum = glm::dot(a, a) + glm::dot(b, b), det = a.x * b.y - a.y * b.x;
+  const double smallest = std::sqrt(std::max(0.0, 0.5 * (sum - std::sqrt(std::max(0.0, sum * sum - 4 * det * det)))));
+  return smallest > 0 ? std::min(kMaxTexelPixels, 1 / smallest) : kMaxTexelPixels;
+}
+
+// The cascade whose slice of the view holds `p` (between the planes of its near and far faces), or -1.
+int sliceOf(const LightView& light, const glm::vec3& p) {
+  for (size_t k = 0; k < light.outlines.size(); ++k) {
+    const auto& c = light.outlines[k];
+    const glm::vec3 n = glm::normalize(glm::cross(c[1] - c[0], c[3] - c[0]));
+    const float along = glm::dot(n, p - c[0]), depth = glm::dot(n, c[4] - c[0]);
+    if (depth > 0 ? along >= 0 && along <= depth : along <= 0 && along >= depth) return int(k);
+  }
+  return -1;
+}
+
+}  // namespace
+
+double texelPixels(const LightView& light, const std::vector<glm::vec4>& positions, int width, int height, int x,
+                   int y) {
+  const glm::vec4& q = positions[size_t(y) * size_t(width) + size_t(x)];
+  glm::vec3 ex, ey;
+  if (!light.hasMap() || light.size <= 0 || q.w == 0 || !step(positions, width, height, x, y, 1, 0, ex) ||
+      !step(positions, width, height, x, y, 0, 1, ey))
+    return 0;
+  const glm::vec3 p(q);
+  const bool cascades = !light.outlines.empty() && light.outlines.size() == light.viewProj.size();
+  size_t first = 0, last = light.viewProj.size();
+  if (cascades) {
+    const int k = sliceOf(light, p);
+    if (k < 0) return 0;
+    first = size_t(k), last = std::min(light.viewProj.size(), size_t(k) + 2);
+  }
+  double most = 0;
+  for (size_t k = first; k < last; ++k) most = std::max(most, footprint(light, k, p, ex, ey));
+  return most;
+}
+
+double outlineTexelPixels(const LightView& light, const std::vector<glm::vec4>& positions, int width, int height,
+                          const std::vector<uint8_t>& outline) {
+  double sum = 0;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      if (outline[size_t(y) * size_t(width) + size_t(x)]) sum += texelPixels(light, positions, width, height, x, y);
+  return sum;
+}
+
+}  // namespace wb
