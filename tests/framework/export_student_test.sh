@@ -26,7 +26,7 @@ grep -q "not exported" "$tmp/export.out" || fail "the export does not say that u
 ! grep -q "WORK IN PROGRESS" "$student/labs/01_depth_map/README.md" || fail "an uncommitted edit was exported"
 [ ! -e "$student/labs/01_depth_map/draft-notes.md" ] || fail "an untracked file was exported"
 for path in solutions tests/mutants tests/hidden tests/grading docs/instructors.md docs/gradescope.md \
-            tools/grading/grade.py tools/grading/gradescope tools/grading/make_submissions.py tools/grading/export_student.sh tools/grading/student_README.md; do
+            tools/grading/grade.py tools/grading/gradescope tests/grading/make_submissions.py tools/grading/export_student.sh tools/grading/student_README.md; do
   [ ! -e "$student/$path" ] || fail "the student edition has $path"
 done
 for path in workbook labs/01_depth_map/exercise.cpp tests/framework docs/adding-a-lab.md; do

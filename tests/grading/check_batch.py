@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Holds a graded batch of synthetic submissions (tools/grading/make_submissions.py) against what each should
+"""Holds a graded batch of synthetic submissions (tests/grading/make_submissions.py) against what each should
 get: usage check_batch.py SUBMISSIONS_DIR GRADES_DIR. Exit 0 when every check passes."""
 import csv
 import json

@@ -4,7 +4,7 @@ an exception inside Grader.grade costs only the exercises not graded yet, with t
 their reason; an exception that escapes a submission's grading altogether (a time-out, a bug)
 becomes a result of 0 with the reason, the batch goes on, every workspace goes back to the pool,
 and gradebook.csv and summary.md list every student. The real time-out of a build is held by the
-synthetic class (endless_build in tools/grading/make_submissions.py)."""
+synthetic class (endless_build in tests/grading/make_submissions.py)."""
 import csv
 import json
 import subprocess

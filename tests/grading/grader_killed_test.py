@@ -30,7 +30,7 @@ rng = random.Random(seed)
 print(f"seed {seed} (rerun with WB_KILL_SEED={seed})")
 shutil.rmtree(out, ignore_errors=True)
 out.mkdir(parents=True)
-subprocess.run([sys.executable, "-B", str(ROOT / "tools/grading/make_submissions.py"), str(out / "subs"), "--labs", "01",
+subprocess.run([sys.executable, "-B", str(ROOT / "tests/grading/make_submissions.py"), str(out / "subs"), "--labs", "01",
                 "--only", "full"], check=True, capture_output=True)
 GRADE = [sys.executable, "-B", str(ROOT / "tools/grading/grade.py"), str(out / "subs/full"), "--labs", "01",
          "--jobs", "1", "--timeout", "8", "--build-timeout", "60", "--judge-build", str(build), "--name", "full"]
@@ -130,7 +130,7 @@ print(f"uninterrupted after the kills: score {doc.get('score')}")
 
 
 # Starved: 300 MB for the whole grading, and 01.1 of a full submission touching 600 MB.
-sys.path.insert(0, str(ROOT / "tools/grading"))
+sys.path.insert(0, str(ROOT / "tests/grading"))
 sys.path.insert(0, str(ROOT / "tools"))
 import submission_tree  # noqa: E402
 from grading.cgroups import Cgroups  # noqa: E402
@@ -161,7 +161,7 @@ else:
 
 # A job's time limit (--time-limit, PrairieLearn's run_job): an endless loop cannot keep the grader
 # past it; the runs after it are cut short, and the student is told.
-subprocess.run([sys.executable, "-B", str(ROOT / "tools/grading/make_submissions.py"), str(out / "loop"), "--labs", "01",
+subprocess.run([sys.executable, "-B", str(ROOT / "tests/grading/make_submissions.py"), str(out / "loop"), "--labs", "01",
                 "--only", "endless_loop_cpp"], check=True, capture_output=True)
 t0 = time.time()
 r = subprocess.run(GRADE[:3] + [str(out / "loop/endless_loop_cpp")] + GRADE[4:] + ["--out", str(out / "limited"),

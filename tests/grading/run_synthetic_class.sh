@@ -20,7 +20,7 @@ base=/opt
 copy=$base/wb-second-copy-$$
 trap 'rm -rf "$copy"' EXIT
 mkdir -p "$copy" && cp -r "$root/solutions" "$copy/" && chmod -R a+rX "$copy"
-/usr/bin/python3 "$root/tools/grading/make_submissions.py" "$out/submissions" --labs 01,02 --second-copy "$copy"
+/usr/bin/python3 "$root/tests/grading/make_submissions.py" "$out/submissions" --labs 01,02 --second-copy "$copy"
 # One seed for the class (14: one that once cost the reference 08.5), so full and full_again must match.
 WB_GRADE_SEED=14 /usr/bin/python3 "$root/tools/grading/grade.py" --batch "$out/submissions" --out "$out/grades" --labs 01,02 --jobs 1 \
   --timeout 8 --build-timeout 8 --judge-build "$build"

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The grader's sandbox on its own (tools/grading/sandbox.py), in seconds, without a build: what a run
 of student code can see, keep and use. ctest -L grading; the synthetic class tries the same through
-real submissions (tools/grading/redteam.py)."""
+real submissions (tests/grading/redteam.py)."""
 import concurrent.futures
 import os
 import sys
