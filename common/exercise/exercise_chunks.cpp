@@ -4,6 +4,8 @@
 #include "common/platform/shader.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <regex>
 
 namespace wb {
 
@@ -119,6 +121,98 @@ std::set<std::string> chunksThatDoNotCompile(const std::string& mine, const std:
     if (!compiles(chunkAlone(mine, stub, id))) broken.insert(id);
   if (broken.empty() || !compiles(withChunksFrom(mine, stub, broken))) return {};
   return broken;
+}
+
+namespace {
+
+bool isExerciseId(const std::string& id) {
+  return !id.empty() && id.find_first_not_of("0123456789.xH") == std::string::npos;
+}
+
+// The names of the functions `chunk` defines: a name, its parameters, then a body's "{".
+std::vector<std::string> definedFunctions(const std::string& chunk) {
+  static const std::regex definition(R"(\b([A-Za-z_]\w*)\s*\([^;{}()]*(\([^;{}()]*\)[^;{}()]*)*\)\s*(const\s*)?\{)");
+  std::vector<std::string> names;
+  for (auto m = std::sregex_iterator(chunk.begin(), chunk.end(), definition); m != std::sregex_iterator(); ++m)
+    if (const std::string name = (*m)[1]; name != "if" && name != "for" && name != "while" && name != "switch")
+      names.push_back(name);
+  return names;
+}
+
+// Where the file's last non-blank line begins when it closes a namespace ("}  // namespace lab01"), or
+// npos. (No std::regex over a student's file: libstdc++'s recursion overflows the stack on long text.)
+size_t namespaceClose(const std::string& text) {
+  const size_t last = text.find_last_not_of(" \t\r\n");
+  if (last == std::string::npos) return std::string::npos;
+  const size_t begin = text.rfind('\n', last) == std::string::npos ? 0 : text.rfind('\n', last) + 1;
+  const std::string line = text.substr(begin, last + 1 - begin);
+  const size_t slashes = line.find("//"), word = line.find_first_not_of(" \t/", slashes);
+  const bool closes = line[0] == '}' && slashes != std::string::npos && line.find_first_not_of(" \t", 1) == slashes &&
+                      word != std::string::npos && line.compare(word, 9, "namespace") == 0;
+  return closes ? begin : std::string::npos;
+}
+
+// Whether `text` defines a function `name`: the name, a balanced "(...)", then (after blanks and a
+// "const") a body's "{". A scan, not a std::regex (see namespaceClose).
+bool definesFunction(const std::string& text, const std::string& name) {
+  auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {
+    if ((at > 0 && word(text[at - 1])) || (at + name.size() < text.size() && word(text[at + name.size()]))) continue;
+    size_t p = text.find_first_not_of(" \t\r\n", at + name.size());
+    if (p == std::string::npos || text[p] != '(') continue;
+    int depth = 0;
+    for (; p < text.size(); ++p) {
+      if (text[p] == ';' || text[p] == '{' || text[p] == '}') break;
+      depth += text[p] == '(' ? 1 : text[p] == ')' ? -1 : 0;
+      if (depth == 0) break;
+    }
+    if (p >= text.size() || depth != 0) continue;
+    p = text.find_first_not_of(" \t\r\n", p + 1);
+    if (p != std::string::npos && text.compare(p, 5, "const") == 0) p = text.find_first_not_of(" \t\r\n", p + 5);
+    if (p != std::string::npos && text[p] == '{') return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+FilledChunks fillMissingChunks(const std::string& mine, const std::string& stub) {
+  FilledChunks out{mine, {}};
+  const auto stubChunks = splitChunks(stub);
+  for (size_t k = 0; k < stubChunks.size(); ++k) {
+    const auto& [id, text] = stubChunks[k];
+    if (!isExerciseId(id) || findMarker(stub, id) != stub.find("// EXERCISE " + id)) continue;
+    if (findMarker(out.text, id) != std::string::npos) continue;
+    const std::vector<std::string> names = definedFunctions(text);
+    const bool defined = std::any_of(names.begin(), names.end(),
+                                     [&](const std::string& name) { return definesFunction(out.text, name); });
+    if (defined) continue;     // its marker was deleted, its code kept: not an earlier edition's file
+    std::string chunk = text;  // without the stub's own closing of the namespace, if it is the last
+    if (const size_t close = namespaceClose(chunk); close != std::string::npos) chunk.erase(close);
+    while (chunk.size() > 1 && chunk.back() == '\n' && chunk[chunk.size() - 2] == '\n') chunk.pop_back();
+    if (chunk.empty() || chunk.back() != '\n') chunk += "\n";
+    size_t at = std::string::npos;
+    for (size_t next = k + 1; next < stubChunks.size() && at == std::string::npos; ++next)
+      if (isExerciseId(stubChunks[next].first) && findMarker(out.text, stubChunks[next].first) != std::string::npos)
+        at = chunkRange(out.text, stubChunks[next].first).first;
+    if (at == std::string::npos) at = namespaceClose(out.text);
+    if (at == std::string::npos) {
+      if (!out.text.empty() && out.text.back() != '\n') out.text += "\n";
+      at = out.text.size();
+    }
+    // (one blank line between it and what it is put beside)
+    const bool atEnd = at == out.text.size(), blankBefore = at >= 2 && out.text.compare(at - 2, 2, "\n\n") == 0;
+    out.text.insert(at, (atEnd && !blankBefore ? "\n" : "") + chunk + (atEnd ? "" : "\n"));
+    out.added.push_back(id);
+  }
+  return out;
+}
+
+std::string filledChunkLine(const std::string& file, const std::string& id, const std::string& stubPath, bool inPlace) {
+  const std::string what = file + " predates exercise " + id + " (it has no '// EXERCISE " + id + "' marker): ";
+  return what + (inPlace ? "check put its stub into the file, from " + stubPath + "; " + id + " is yours to do"
+                         : "its stub was graded in its place (not done yet); copy its chunk from " + stubPath +
+                               " into your file to do it");
 }
 
 namespace {

@@ -43,6 +43,24 @@ std::string withChunksFrom(const std::string& current, const std::string& lastGo
 /// exercise `id` alone (only chunks the stub has, of an exercise id's shape, are swapped).
 std::string chunkAlone(const std::string& mine, const std::string& stub, const std::string& id);
 
+/// What fillMissingChunks() did: the file, and the exercises whose stubs it put in.
+struct FilledChunks {
+  std::string text;
+  std::vector<std::string> added;
+};
+
+/// `mine`, written against an earlier edition of the lab, with every exercise the stub has and `mine`
+/// lacks (no marker, and none of its functions defined) filled in from `stub`: that exercise is then
+/// "not implemented" (or, for a bug hunt, still has its bug), and every other one is graded as
+/// written. Each chunk goes before the marker of the next exercise `mine` has, in the stub's order,
+/// or at the end, inside the file's closing "}  // namespace". An exercise whose function `mine`
+/// defines without its marker (a deleted marker) is left alone.
+FilledChunks fillMissingChunks(const std::string& mine, const std::string& stub);
+/// The one line `check` and the grader print for an exercise fillMissingChunks() added to `file`
+/// from `stubPath`: `check` put the stub into the student's file (`inPlace`), the grader graded it in
+/// its place.
+std::string filledChunkLine(const std::string& file, const std::string& id, const std::string& stubPath, bool inPlace);
+
 /// Whether a whole exercise file compiles, as some program or kernel reads it (the caller's GL).
 using CompilesFn = std::function<bool(const std::string& text)>;
 

@@ -3,6 +3,10 @@
 //   wb_check NN [--root DIR] [--tests EXE] [--judge EXE] [--tape DIR] [--submission DIR] [--html FILE]
 //   wb_check --runner TESTS ID TAPE          one exercise's runner (the check's first half)
 //   wb_check --judge NN JUDGE TAPE SUBMISSION the judge (its second half)
+//   wb_check --fill-missing FILE STUB NAME STUB_NAME check|grader
+//                                            an earlier edition's file: the exercises it lacks, from
+//                                            the stub (fillMissingChunks), one line each
+#include "common/exercise/exercise_chunks.hpp"
 #include "tests/harness/supervisor.hpp"
 
 #include "common/platform/process.hpp"
@@ -24,7 +28,8 @@ namespace {
 constexpr const char* kUsage =
     "usage: wb_check NN [--root DIR] [--tests EXE] [--judge EXE] [--tape DIR] [--submission DIR] [--html FILE]\n"
     "       wb_check --runner TESTS ID TAPE\n"
-    "       wb_check --judge NN JUDGE TAPE SUBMISSION\n";
+    "       wb_check --judge NN JUDGE TAPE SUBMISSION\n"
+    "       wb_check --fill-missing FILE STUB NAME STUB_NAME check|grader\n";
 
 int usage(const std::string& why) {
   std::fprintf(stderr, "wb_check: %s\n%s", why.c_str(), kUsage);
@@ -92,6 +97,25 @@ int checkLab(const std::string& nn, std::map<std::string, std::string> opt) {
   return rc;
 }
 
+// FILE with the exercises it lacks filled in from STUB, written back when any were; one line each on
+// stdout, naming the files as NAME and STUB_NAME (what the student sees).
+int fillMissing(const std::vector<std::string>& a) {
+  if (a.size() != 6 || (a[5] != "check" && a[5] != "grader"))
+    return usage("--fill-missing takes FILE STUB NAME STUB_NAME check|grader");
+  std::string text[2];
+  for (int k : {0, 1}) {
+    std::ifstream in(a[size_t(k) + 1], std::ios::binary);
+    if (!in) return usage("--fill-missing: cannot read " + a[size_t(k) + 1]);
+    text[k].assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const wb::FilledChunks filled = wb::fillMissingChunks(text[0], text[1]);
+  if (filled.added.empty()) return 0;
+  std::ofstream(a[1], std::ios::binary | std::ios::trunc) << filled.text;
+  for (const std::string& id : filled.added)
+    std::printf("%s\n", wb::filledChunkLine(a[3], id, a[4], a[5] == "check").c_str());
+  return 0;
+}
+
 void onSignal(int) { wb::check::requestStop(); }
 
 }  // namespace
@@ -108,6 +132,7 @@ int main(int argc, char** argv) {
     wb::check::runExerciseRunner(a[1], a[2], a[3], limits, "");
     return 0;
   }
+  if (a[0] == "--fill-missing") return fillMissing(a);
   if (a[0] == "--judge") {
     if (a.size() != 5) return usage("--judge takes NN JUDGE TAPE SUBMISSION");
     return wb::check::runJudge(a[1], a[2], a[3], a[4], limits);
