@@ -28,6 +28,7 @@ chroot "$root" /bin/bash -c 'cd /work/workbook && apt-get update -qq && apt-get 
   bash ./workbook setup' >"$logs/setup.log" 2>&1 ||
   { tail -20 "$logs/setup.log"; die "./workbook setup failed in trixie ($logs/setup.log)"; }
 echo "trixie: ./workbook setup took $(($(date +%s) - t0)) s"
+# shellcheck disable=SC2016  # (dpkg-query's own format, not the shell's)
 chroot "$root" dpkg-query -W -f='  ${Package} ${Version}\n' g++ cmake libglfw3-dev libembree-dev libgtest-dev \
   libimgui-dev libglm-dev nlohmann-json3-dev libgl1-mesa-dri 2>/dev/null || true
 
