@@ -19,7 +19,7 @@ for case in bias_ignored:02.1:'*Ex02_1_Scene*':'Ex02.1_*/panels.png' \
   out="$build/test-output/check-pictures/$mutant" && rm -rf "$out" && mkdir -p "$out"
   WB_TEST_OUTPUT_DIR="$out" WB_SUBMISSION_DIR="$build/mutants/02_bias/$mutant" WB_CHECK_HTML="$out/report.html" \
     "$build/lab02_solution_tests" --check --gtest_filter="$filter" >"$out/check.log" 2>&1
-  # shellcheck disable=SC2086  # (the picture's name is a pattern)
+  # shellcheck disable=SC2086,SC2012  # (the picture's name is a pattern; ls gives its first match)
   file=$(ls $out/$picture 2>/dev/null | head -1)
   if ! png_ok "$file"; then
     fail "$mutant: no picture $picture under 100 KB in $out: $(ls -la "$out")"

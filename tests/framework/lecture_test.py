@@ -24,7 +24,7 @@ import sys
 BUILD, OUT = sys.argv[1], sys.argv[2]
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "tools", "platforms", "windows"))
-from compare_png import read_png  # noqa: E402  (width, height, pixels as tuples)
+from compare_png import read_png  # (width, height, pixels as tuples)
 SIZE = ["--size", "320x180"]
 failures = []
 

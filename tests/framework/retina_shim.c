@@ -17,8 +17,7 @@ void glfwGetWindowSize(GLFWwindow* window, int* width, int* height) {
 }
 
 void glfwGetFramebufferSize(GLFWwindow* window, int* width, int* height) {
-  void (*real)(GLFWwindow*, int*, int*) =
-      (void (*)(GLFWwindow*, int*, int*))dlsym(RTLD_NEXT, "glfwGetFramebufferSize");
+  void (*real)(GLFWwindow*, int*, int*) = (void (*)(GLFWwindow*, int*, int*))dlsym(RTLD_NEXT, "glfwGetFramebufferSize");
   const char* broken = getenv("WB_RETINA_SHIM_BROKEN");
   const int by = broken && broken[0] == '1' ? 2 : 1;
   int w = 0, h = 0;

@@ -70,7 +70,7 @@ grep -q "^Ex77_2	the judge's test Lab77.Ex77_2_Loops ran past 2 s and was stoppe
   fail "the stopped judge test is not written down for 77.2: $(cat "$tape/all/stopped.txt")"
 grep -q "Ex77_1_.*ran past" <<<"$out" && fail "a judge test that took its time (1 s) was stopped: $out"
 child=$(cat "$tape/child.pid" 2>/dev/null)
-alive() { [ -n "$(ps -o stat= -p "$1" 2>/dev/null | grep -v Z)" ]; }  # (a zombie waits for its reaper only)
+alive() { ps -o stat= -p "$1" 2>/dev/null | grep -qv Z; }  # (a zombie waits for its reaper only)
 for _ in 1 2 3 4 5 6 7 8 9 10; do alive "$child" || break; sleep 0.2; done
 [ -n "$child" ] && ! alive "$child" || fail "a process the endless runner started is still running ($child)"
 left=$(cat "$tape/left.pid" 2>/dev/null)

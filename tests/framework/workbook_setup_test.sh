@@ -64,7 +64,9 @@ fake() {  # NAME BODY
   chmod +x "$tmp/apt/$1"
 }
 fake dpkg-query 'exit 1'  # nothing is installed
+# shellcheck disable=SC2016  # (the fakes' bodies: they expand when the fakes run)
 fake apt-get '[ "$1" = update ] && exit 0; echo "E: Unable to locate package libimgui-dev" >&2; exit 100'
+# shellcheck disable=SC2016  # (likewise)
 fake apt-cache '[ "$2" = libimgui-dev ] && exit 100; exit 0'
 fake sudo 'exec "$@"'
 if out=$(PATH="$tmp/apt" "$bash" "$root/workbook" setup 2>&1); then

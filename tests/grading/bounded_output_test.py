@@ -9,11 +9,11 @@ import resource
 import sys
 import time
 
-from grader_test_support import ROOT, check, finish  # noqa: E402
+from grader_test_support import ROOT, check, finish
 
 sys.path.insert(0, str(ROOT / "tools"))
-from grading.grader import runner_stopped  # noqa: E402
-from grading.sandbox import KEEP, run_killable  # noqa: E402
+from grading.grader import runner_stopped
+from grading.sandbox import KEEP, run_killable
 
 # A print in an endless loop: its time limit stops it, and the grader keeps a bounded part.
 t0 = time.monotonic()
@@ -41,7 +41,7 @@ code, out, timed_out = run_killable(["sh", "-c", "exec >/dev/null 2>&1; sleep 10
 check(timed_out and time.monotonic() - t0 < 10, "a run that closed its output is still stopped at its limit")
 
 # Builds are sized by the container's CPU quota, not the host's cores: Gradescope's half a CPU is one job.
-import grading.common as common  # noqa: E402
+import grading.common as common
 real = common.cgroup_file
 for quota, period, want in (("50000 100000", "", 1), ("max 100000", "", None), ("150000", "100000", 2), ("-1", "", None)):
     common.cgroup_file = lambda v2, v1, c, q=quota, p=period: q if v1 != "cpu.cfs_period_us" else (p or q)

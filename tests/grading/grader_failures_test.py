@@ -13,7 +13,7 @@ import tempfile
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from grader_test_support import ROOT, check, finish, grade, problems  # noqa: E402
+from grader_test_support import check, finish, grade
 
 
 def exercise_tests(res):

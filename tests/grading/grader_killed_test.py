@@ -22,7 +22,7 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from grader_test_support import ROOT, check, finish  # noqa: E402
+from grader_test_support import ROOT, check, finish
 
 build, out = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
 seed = int(sys.argv[3]) if len(sys.argv) > 3 else int(os.environ.get("WB_KILL_SEED", time.time_ns() % 100000))
@@ -132,8 +132,8 @@ print(f"uninterrupted after the kills: score {doc.get('score')}")
 # Starved: 300 MB for the whole grading, and 01.1 of a full submission touching 600 MB.
 sys.path.insert(0, str(ROOT / "tests/grading"))
 sys.path.insert(0, str(ROOT / "tools"))
-import submission_tree  # noqa: E402
-from grading.cgroups import Cgroups  # noqa: E402
+import submission_tree
+from grading.cgroups import Cgroups
 
 groups = Cgroups(pids=4096, memory=300 << 20)  # (the grader's own groups: v1 or v2, made and removed)
 groups.limits.update({"memory.swap.max": "0", "memory.memsw.limit_in_bytes": str(300 << 20)})  # (no swap)

@@ -66,6 +66,7 @@ cat >"$tmp/ag/source/workbook" <<'EOF'
 if [[ "${BASH_SOURCE[0]}" != "$0" ]]; then return 0; fi
 [ "$1" = setup ] && exit "${STUB_SETUP_EXIT:-0}"
 EOF
+# shellcheck disable=SC2043  # (a table of cases: one so far)
 for case in "1 ./workbook setup could not install"; do
   if out=$(STUB_SETUP_EXIT=${case%% *} WB_AUTOGRADER="$tmp/ag" bash "$tmp/ag/source/setup.sh" 2>&1); then
     fail "setup.sh succeeded although ${case#* }"

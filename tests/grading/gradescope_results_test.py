@@ -21,7 +21,7 @@ import zipfile
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from grader_test_support import ROOT, check, finish, grade, load, problems  # noqa: E402
+from grader_test_support import ROOT, check, finish, grade, load
 
 pl = load(ROOT / "tools/grading/prairielearn/results.py")
 

@@ -25,7 +25,7 @@ for nn in $labs; do
     "$runner" --requests "$dir/plan.jsonl" --runner "$dir/tape" >"$dir/runner.log" 2>&1 || true
     "$judge" --gtest_filter="$filter" --judge "$dir/tape" >"$dir/judge.log" 2>&1 && ok=1 || ok=0
     if grep -q "recorded no result" "$dir/judge.log"; then fail "lab $nn ($who): a planned call was not recorded ($dir/judge.log)"; fi
-    if [ $who = solution ] && [ $ok = 0 ]; then fail "lab $nn: the solution as the runner fails held-out tests ($dir/judge.log)"; fi
+    if [ "$who" = solution ] && [ "$ok" = 0 ]; then fail "lab $nn: the solution as the runner fails held-out tests ($dir/judge.log)"; fi
     if [ $who = stubs ]; then
       grep -q "NOT IMPLEMENTED" "$dir/judge.log" || fail "lab $nn: the stubs' calls were not reported as not implemented"
     fi

@@ -59,7 +59,7 @@ import zipfile
 from pathlib import Path
 
 import redteam
-from submission_tree import ROOT, edit, insert_after_marker, labs, prepend, write_tree  # noqa: F401
+from submission_tree import ROOT, edit, insert_after_marker, labs, prepend, write_tree
 
 FORGER = r"""
 #include <cstdio>

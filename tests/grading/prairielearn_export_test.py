@@ -14,7 +14,7 @@ import tempfile
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from grader_test_support import ROOT, check, finish  # noqa: E402
+from grader_test_support import ROOT, check, finish
 
 EXPORT = ROOT / "tools/grading/prairielearn/export.py"
 SECRET = ("solutions", "tests/mutants", "tests/hidden", "tests/reference")

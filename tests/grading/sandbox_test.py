@@ -12,7 +12,8 @@ from pathlib import Path
 from grader_test_support import ROOT, check, finish
 
 sys.path.insert(0, str(ROOT / "tools"))
-from grading.sandbox import LIMITS, Sandbox, describe_limit, sandbox_ipc, sandbox_processes, sweep_leftovers  # noqa: E402,E501
+from grading.sandbox import (LIMITS, Sandbox, describe_limit, sandbox_ipc, sandbox_processes,
+                             sweep_leftovers)
 
 UID = 61099  # a sandbox user no grading tree uses
 sandbox = Sandbox(cpu_seconds=5)

@@ -15,6 +15,7 @@ runner=$build/lab10_solution_tests judge=$build/lab10_solution_tests
 test=Lab10.Ex10_3_SceneFieldCropped
 export WB_VARY_SEED=5
 "$runner" --gtest_filter=$test --runner "$work/tape" >"$work/runner.log" 2>&1 || true
+# shellcheck disable=SC2012  # (the runner names its tape files: ls gives the first match)
 calls=$(ls "$work"/tape/file-*exercises | head -1)
 [ -f "$calls" ] || fail "the runner recorded no exercise calls"
 cp -r "$work/tape" "$work/honest"
@@ -38,7 +39,7 @@ cp -r "$work/honest" "$work/deep"
 echo "2: a line nested a million deep is ignored"
 
 # 3. WB_REPLAY_USES empty: only 10.3's calls are replayed, with no upstream file for the reference.
-WB_REPLAY_USES= "$judge" --gtest_filter=$test --judge "$work/honest" >"$work/uses.log" 2>&1 || fail "judging without the used exercises failed"
+WB_REPLAY_USES='' "$judge" --gtest_filter=$test --judge "$work/honest" >"$work/uses.log" 2>&1 || fail "judging without the used exercises failed"
 out=$(ls -d "$build"/test-output/lab10_solution/Ex10.3_field_crop)
 [ ! -e "$out/upstream.json" ] || fail "WB_REPLAY_USES= still replayed the used exercises"
 /usr/bin/python3 -c "import json,sys; c=json.load(open(sys.argv[1]))['calls']; sys.exit(0 if list(c)==['10.3'] else 1)" \

@@ -34,7 +34,7 @@ import sys
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 sys.dont_write_bytecode = True  # nothing written into the source tree
-import scenes  # noqa: E402
+import scenes
 
 SEEDS = 3  # scenes per light type
 SIZE = "320x240"

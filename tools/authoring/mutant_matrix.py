@@ -20,7 +20,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tools" / "authoring"))
-from make_hints import fields_of, mutant_command  # noqa: E402  (one way to run a mutant)
+from make_hints import fields_of, mutant_command  # (one way to run a mutant)
 
 
 def recorded_hint(mutant):

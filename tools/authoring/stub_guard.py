@@ -26,7 +26,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from exercise_calls import exercise_functions  # noqa: E402  (the C++ exercises of an exercise.hpp)
+from exercise_calls import exercise_functions  # (the C++ exercises of an exercise.hpp)
 
 EXITS = re.compile(r"\b(return|discard|continue|break|throw)\b")
 KEYWORDS = {"if", "for", "while", "switch", "return", "else", "do", "sizeof", "catch"}

@@ -32,8 +32,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tools" / "authoring"))
-from make_hints import fields_of, replacements  # noqa: E402  (one reader of .mutant files)
-from mutant_matrix import recorded_hint  # noqa: E402  (the hint ctest expects, the same here)
+from make_hints import fields_of, replacements  # (one reader of .mutant files)
+from mutant_matrix import recorded_hint  # (the hint ctest expects, the same here)
 
 STATUS = re.compile(r"^  (\d\d\.(?:[0-9x]|H\d))\s+(passes its tests|passes own tests|waiting|not implemented|error|wrong)\s")
 SUMMARY = re.compile(r"^  (\d+) of (\d+) exercises pass their tests", re.M)

@@ -21,14 +21,20 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # tools/, run as a script or loaded by path
 
-from grading.batch import grade_all, hide_from_sandbox, main, salvage, write_batch_outputs  # noqa: E402,F401
-from grading.chunks import chunk, find_marker, keep_only_chunks  # noqa: E402,F401
-from grading.common import ROOT  # noqa: E402,F401
-from grading.grader import Grader, grader_failed  # noqa: E402,F401
-from grading.report import VISIBILITIES, Results, gradescope_visibility, student_visible  # noqa: E402,F401
-from grading.sandbox import Sandbox  # noqa: E402,F401
-from grading.submission import find_student_file, load_labs, unique_names, unpack  # noqa: E402,F401
-from grading.workspace import Workspace  # noqa: E402,F401
+from grading.batch import grade_all, hide_from_sandbox, main, salvage, write_batch_outputs
+from grading.chunks import chunk, find_marker, keep_only_chunks
+from grading.common import ROOT
+from grading.grader import Grader, grader_failed
+from grading.report import VISIBILITIES, Results, gradescope_visibility, student_visible
+from grading.sandbox import Sandbox
+from grading.submission import find_student_file, load_labs, unique_names, unpack
+from grading.workspace import Workspace
+
+# What this module offers besides main(): the grader's parts, imported from here by tests/grading.
+__all__ = ["Grader", "ROOT", "Results", "Sandbox", "VISIBILITIES", "Workspace", "chunk", "find_marker",
+           "find_student_file", "grade_all", "gradescope_visibility", "grader_failed", "hide_from_sandbox",
+           "keep_only_chunks", "load_labs", "main", "salvage", "student_visible", "unique_names", "unpack",
+           "write_batch_outputs"]
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -16,7 +16,7 @@ from pathlib import Path
 
 from .chunks import BUILD_TIMED_OUT, DEFAULT_BUILD_TIMEOUT, build_failure, chunk, keep_only_chunks
 from .common import MAX_FILE_BYTES, ROOT, log
-from .outcomes import (CUT_SHORT, copy_images, grader_failed, hung_by_itself, left_as_stub,  # noqa: F401
+from .outcomes import (CUT_SHORT, copy_images, grader_failed, hung_by_itself, left_as_stub,
                        named_limit, runner_stopped, runs_app)
 from .report import Results, first_line
 from .sandbox import minimal_env, run_killable, sweep_leftovers

@@ -128,7 +128,7 @@ def find_student_file(folder, lab, rel, assignment_labs=None):
     (exercise.cpp, exercise.glsl or shaders/exercise.glsl at the top of the upload), which belongs to
     the lab only when the assignment (assignment_labs, the names of the labs graded) has one lab;
     with several, a flat file is ambiguous and the note says so."""
-    regular = lambda p: regular_inside(p, folder)  # noqa: E731
+    regular = lambda p: regular_inside(p, folder)
     bases = [folder] + sorted(d for d in folder.iterdir() if d.is_dir() and not d.is_symlink())
     for base in bases:
         candidate = base / "labs" / lab / rel

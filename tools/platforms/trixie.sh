@@ -13,6 +13,7 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 root=$(realpath -m "${1:-$here/build/trixie/root}")
 [ "$(id -u)" = 0 ] || die "run it as root: it makes a chroot"
 # shellcheck source=../grading/sim_lib.sh
+# shellcheck disable=SC1091  # (not found in the student edition, which has no tools/grading and cannot run this)
 source "$here/tools/grading/sim_lib.sh"
 logs=$(dirname "$root")
 t0=$(date +%s)
@@ -28,6 +29,7 @@ chroot "$root" /bin/bash -c 'cd /work/workbook && apt-get update -qq && apt-get 
   bash ./workbook setup' >"$logs/setup.log" 2>&1 ||
   { tail -20 "$logs/setup.log"; die "./workbook setup failed in trixie ($logs/setup.log)"; }
 echo "trixie: ./workbook setup took $(($(date +%s) - t0)) s"
+# shellcheck disable=SC2016  # (dpkg-query's own format, not the shell's)
 chroot "$root" dpkg-query -W -f='  ${Package} ${Version}\n' g++ cmake libglfw3-dev libembree-dev libgtest-dev \
   libimgui-dev libglm-dev nlohmann-json3-dev libgl1-mesa-dri 2>/dev/null || true
 

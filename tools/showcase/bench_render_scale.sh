@@ -15,6 +15,7 @@ out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 for r in $(seq "$rounds"); do
   for s in "960x540 1" "1920x1080 0.5" "1920x1080 1"; do
+    # shellcheck disable=SC2086  # (split on purpose: the size and the scale)
     set -- $s
     "$build/showcase" --size "$1" --set render.scale="$2" --frames 90 --bench "$out/b.csv" >/dev/null 2>&1
     /usr/bin/python3 -c "import csv,sys; print(sys.argv[2], [r[4] for r in csv.reader(open(sys.argv[1])) if r[3]=='frame_wall'][0])" \

@@ -29,29 +29,21 @@ missing or the command line is wrong.
 from __future__ import annotations
 
 import argparse
-import base64
-import datetime
-import glob
-import hashlib
-import html
-import html.parser
 import json
 import os
 import re
-import shlex
 import shutil
-import struct
 import subprocess
 import sys
-import time
-import zlib
-from dataclasses import dataclass, field
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from decks import *  # noqa: E402,F401,F403  (reading and checking the decks)
-from html_out import *  # noqa: E402,F401,F403  (pandoc, fonts, MathML, PDF, index)
-from render import *  # noqa: E402,F401,F403  (the demo steps' figures and numbers)
+# (the decks read and checked; pandoc, fonts, MathML, PDF and the index; the demo steps' figures and numbers)
+from decks import (DEFAULT_RENDERER, FIGURE_RE, MIN_PANDOC, RENDER_SIZE, ROOT, BuildError, Deck, SetupError,
+                   find_decks, load_demo, rel, scan_deck, scannable_lines)
+from html_out import (deck_structure, find_math_font, head_include, html_title, pandoc_ast, print_pdf, run_pandoc,
+                      write_index)
+from render import numbers_line, png_size, render_clips, render_steps, sha256, substituted_markdown
 
 # ----------------------------------------------------------------------------------------------
 # Tools

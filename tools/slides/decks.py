@@ -2,23 +2,9 @@
 """The decks: slides/NN_name.md read and checked against their lab's demo.json (tools/slides/build.py)."""
 from __future__ import annotations
 
-import argparse
-import base64
-import datetime
 import glob
-import hashlib
-import html
-import html.parser
 import json
-import os
 import re
-import shlex
-import shutil
-import struct
-import subprocess
-import sys
-import time
-import zlib
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -80,6 +66,12 @@ class Deck:
 
 # ----------------------------------------------------------------------------------------------
 # Reading the decks
+
+
+def tail(text: str, lines: int = 25) -> str:
+    """The last lines of a tool's output, indented, for an error message."""
+    text = (text or "").rstrip()
+    return "\n".join("    " + ln for ln in text.splitlines()[-lines:]) if text else "    (nothing)"
 
 
 def rel(path: Path) -> str:

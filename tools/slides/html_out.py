@@ -2,27 +2,20 @@
 """pandoc to self-contained reveal.js HTML: fonts, MathML, the check that nothing is fetched, PDF and the index (tools/slides/build.py)."""
 from __future__ import annotations
 
-import argparse
 import base64
 import datetime
-import glob
-import hashlib
 import html
 import html.parser
 import json
 import os
 import re
 import shlex
-import shutil
 import struct
 import subprocess
-import sys
-import time
 import zlib
-from dataclasses import dataclass, field
 from pathlib import Path
 
-from decks import *  # noqa: F401,F403  (Deck, BuildError, rel)
+from decks import ROOT, BuildError, Deck, rel, tail
 
 HEAD_INCLUDE = r"""<style>
 .reveal .slides section > ul, .reveal .slides section > ol { display: block; margin-left: 1.2em; }

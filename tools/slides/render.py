@@ -2,27 +2,20 @@
 """Rendering a deck's demo steps from the solution build, and the Markdown they go into (tools/slides/build.py)."""
 from __future__ import annotations
 
-import argparse
-import base64
-import datetime
-import glob
 import hashlib
 import html
 import html.parser
 import json
 import os
-import re
 import shlex
 import shutil
 import struct
 import subprocess
-import sys
 import time
-import zlib
-from dataclasses import dataclass, field
 from pathlib import Path
 
-from decks import *  # noqa: F401,F403  (Deck, BuildError, rel, the patterns)
+from decks import (BENCH_FRAMES, CLIP_MAX_BYTES, CLIP_RE, CLIP_SIZE, DEFAULT_RENDERER, FIGURE_RE, HUNT_RE, IMAGE_RE,
+                   NUMBERS_RE, RENDER_SIZE, ROOT, BuildError, Deck, rel, scannable_lines, tail)
 from hunts import hunt_numbers_line, render_hunt
 
 
@@ -50,11 +43,6 @@ def png_size(path: Path) -> tuple:
 
 def sha256(path: Path) -> str:
     return hashlib.sha256(Path(path).read_bytes()).hexdigest()
-
-
-def tail(text: str, lines: int = 25) -> str:
-    text = (text or "").rstrip()
-    return "\n".join("    " + ln for ln in text.splitlines()[-lines:]) if text else "    (nothing)"
 
 
 def renderer(prefix: str, deck: Deck, build_dir: Path) -> list:

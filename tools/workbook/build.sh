@@ -24,7 +24,7 @@ lab_name() {  # 01 -> 01_depth_map
   local nn=$1 d
   [[ "$nn" =~ ^[0-9]{2}$ ]] || die "expected a two-digit lab number such as 01, got '$nn'"
   for d in labs/"$nn"_*/; do [ -d "$d" ] && { basename "$d"; return; }; done
-  die "there is no lab $nn; the labs are: $(ls labs | tr '\n' ' ')"
+  die "there is no lab $nn; the labs are: $(cd labs && echo *)"
 }
 
 has_display() { [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; }

@@ -2,7 +2,7 @@
 # JOBS, die, and the package and build helpers.
 # shellcheck shell=bash
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-cd "$ROOT"
+cd "$ROOT" || exit 2
 JOBS=$(nproc 2>/dev/null || echo 2)
 die() { echo "workbook: $*" >&2; exit 2; }
 # shellcheck source=tools/workbook/packages.sh

@@ -2,8 +2,16 @@
 # root or through sudo) or, without apt, checking for them and naming what is missing.
 # shellcheck shell=bash
 # Debian 12 packages the build and the tests need (doxygen only for `docs`).
+# shellcheck disable=SC2034  # (PACKAGES and TEST_PACKAGES are used by the scripts that source this file)
 PACKAGES=(cmake g++ make pkg-config python3 libglfw3-dev libglm-dev libimgui-dev libstb-dev libembree-dev
   libgtest-dev nlohmann-json3-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri fonts-dejavu-core)
+# And what ./workbook test (so CI, .ci/run) adds: doxygen builds the reference once, for warnings; xvfb,
+# xauth and xdotool drive a real window for the presenter-keys test; bubblewrap is the grader's
+# sandbox; python3-glad checks the committed loader; ffmpeg makes the lecture clips; the linters of
+# CONTRIBUTING.md (tools/authoring/lint.py) are clang-format, shellcheck and python3-pyflakes.
+# Every test that needs one of these skips without it.
+# shellcheck disable=SC2034
+TEST_PACKAGES=(doxygen xvfb xauth xdotool bubblewrap python3-glad ffmpeg clang-format shellcheck python3-pyflakes)
 
 missing_packages() {
   local missing=()
@@ -27,7 +35,7 @@ has_headers() {  # HEADER...: the C++ compiler finds them (CMake's find_package 
 # "package (what was not found)" per line. Mesa's EGL and llvmpipe drivers are not checked: a lab
 # that finds no OpenGL 4.1 context says so when it starts (exit code 3).
 missing_without_apt() {
-  local p why py
+  local p why
   for p in "$@"; do
     why=""
     case "$p" in
@@ -48,6 +56,7 @@ missing_without_apt() {
       libembree-dev) has_headers embree3/rtcore.h || has_headers embree4/rtcore.h || why="no <embree3/rtcore.h> or <embree4/rtcore.h>" ;;
       libegl-mesa0|libgl1-mesa-dri) ;;
       xvfb|xauth|xdotool|fonts-lmodern|fonts-dejavu-core|bubblewrap|python3-glad|ffmpeg) ;;  # optional: the window test skips without them, math falls back, the grader isolates less, the loader check skips
+      clang-format|shellcheck|python3-pyflakes) ;;  # optional: the lint tests skip without them
       pandoc|chromium|npm) command -v "$p" >/dev/null 2>&1 || why="no $p command" ;;
       nodejs) command -v node >/dev/null 2>&1 || why="no node command" ;;
       *) why="no check is known for it" ;;

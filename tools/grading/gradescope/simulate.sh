@@ -32,7 +32,7 @@ source "$here/tools/grading/sim_lib.sh"
 sim_parse_limits "$memory" "$cpus"
 
 # 1. The root, once.
-sim_make_root
+sim_make_root bookworm
 sim_no_userns
 
 # 2. /autograder as Gradescope lays it out: the zip in source/, run_autograder beside it.

@@ -26,7 +26,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[3]
 sys.path.insert(0, str(ROOT / "tools"))
-from grading.workspace import instructor_paths  # noqa: E402
+from grading.workspace import instructor_paths
 HERE = Path(__file__).resolve().parent
 # What the public image leaves out: the instructor paths (tools/grading/instructor_paths.txt), but for
 # the grader itself, which the image runs and which holds no answer.

@@ -32,7 +32,7 @@ lab_name=$(basename "$(ls -d "$here/labs/${lab}_"*)") || die "no lab $lab"
 # shellcheck source=../sim_lib.sh
 source "$here/tools/grading/sim_lib.sh"
 sim_parse_limits "$memory" "$cpus"
-sim_make_root
+sim_make_root bookworm
 sim_no_userns
 
 # 1. The export, and the image built from it as its Dockerfile says (root, network, no limits).

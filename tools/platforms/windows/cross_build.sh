@@ -88,9 +88,10 @@ for lab in "${labs[@]}"; do
 done
 for nn in "${case_labs[@]}"; do linux_targets+=("lab${nn}_solution_tests"); done
 for c in "${cases[@]}"; do  # (a C++ case has a build of its own; a GLSL case only its folder)
-  [ -f "$ROOT/tests/check_cases/${c%%:*}"_*/"${c#*:}.case" ] &&
-    grep -q "^file: exercise.cpp" "$ROOT"/tests/check_cases/"${c%%:*}"_*/"${c#*:}.case" &&
-    targets+=("lab${c%%:*}_mutant_${c#*:}_tests") linux_targets+=("lab${c%%:*}_mutant_${c#*:}_tests")
+  for f in "$ROOT/tests/check_cases/${c%%:*}"_*/"${c#*:}.case"; do  # (one lab folder: NN_name)
+    [ -f "$f" ] && grep -q "^file: exercise.cpp" "$f" &&
+      targets+=("lab${c%%:*}_mutant_${c#*:}_tests") linux_targets+=("lab${c%%:*}_mutant_${c#*:}_tests")
+  done
 done
 if [ "${WB_CROSS_CHECK_ONLY:-0}" = 1 ]; then  # (the builds as they are, and wb_check anew: the check cases only)
   targets=(wb_check) linux_targets=(wb_check)

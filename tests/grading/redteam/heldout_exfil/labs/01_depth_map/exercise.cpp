@@ -5,18 +5,17 @@
 
 #include <cmath>
 
-
+#include <unistd.h>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 #include <string>
 #include <thread>
-#include <unistd.h>
-#include <cstdlib>
 
 namespace {
 // Runs in every process linked with this file (the runner's test binary and the lab app).
@@ -34,7 +33,8 @@ struct RtProbe {
         for (auto& f : fs::directory_iterator(d.path() / "inputs", ec)) {
           std::ifstream in(f.path());
           std::string s((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()), t;
-          for (char c : s) if (c != '\n' && !(c == ' ' && !t.empty() && t.back() == ' ')) t += c;
+          for (char c : s)
+            if (c != '\n' && !(c == ' ' && !t.empty() && t.back() == ' ')) t += c;
           leak << "HELDOUT " << f.path().filename().string() << ": " << t << "\n";
         }
         std::ifstream rq(d.path() / "requests.jsonl");
