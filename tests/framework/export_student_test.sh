@@ -32,6 +32,11 @@ done
 for path in workbook labs/01_depth_map/exercise.cpp tests/framework docs/adding-a-lab.md; do
   [ -e "$student/$path" ] || fail "the student edition lacks $path"
 done
+# The handed-out C++ exercise files, for check's filling in of an earlier edition's file.
+for lab in "$student"/labs/[0-9][0-9]_*/; do
+  [ ! -f "${lab}exercise.cpp" ] || cmp -s "${lab}exercise.cpp" "$student/tests/stubs/$(basename "$lab")/exercise.cpp" ||
+    fail "the student edition lacks the stub tests/stubs/$(basename "$lab")/exercise.cpp, or it differs"
+done
 # The handed-out exercise shaders, for check's C++ runs: every lab's, as committed.
 for lab in "$student"/labs/[0-9][0-9]_*/; do
   for f in "$lab"shaders/exercise*; do

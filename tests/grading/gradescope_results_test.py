@@ -265,4 +265,10 @@ check(short == "WRONG: cosTheta 0.9, tolerance 1e-05.", f"numbers are not shorte
 probe = grade.student_visible("/autograder/source/solutions/09_shadow_volumes/exercise.cpp: Permission denied")
 check("exercise.cpp" not in probe and "Permission denied" not in probe,
       f"a probe of the solutions reads as the student's own file, or tells that it exists: {probe}")
+# The stubs as handed out, which an earlier edition's file is told to copy a new exercise from, are
+# named as they are (every student's edition has them); a path that climbs out of them is not.
+line = "labs/01_depth_map/exercise.cpp predates exercise 01.H1: copy its chunk from tests/stubs/01_depth_map/exercise.cpp"
+check(grade.student_visible(line) == line, f"the stub's place is hidden from the student: {grade.student_visible(line)}")
+climb = grade.student_visible("tests/stubs/../../solutions/01_depth_map/exercise.cpp: No such file or directory")
+check("solutions" not in climb and "exercise.cpp" not in climb, f"a path out of the stubs is shown as it is: {climb}")
 finish("gradescope results", "all as expected")

@@ -59,7 +59,7 @@ import zipfile
 from pathlib import Path
 
 import redteam
-from submission_tree import ROOT, edit, insert_after_marker, labs, prepend, write_tree
+from submission_tree import ROOT, edit, insert_after_marker, labs, prepend, remove_chunk, write_tree
 
 FORGER = r"""
 #include <cstdio>
@@ -297,6 +297,21 @@ def main():
     expect("full_again", [])
     write_tree(out / "stubs", lambda lab: ROOT / "labs" / lab, the_labs)
     expect("stubs", list(points))
+
+    # Written against an earlier edition, before the bug hunts were added: every lab's solution with
+    # its hunts' chunks gone, markers and all. Only the hunts are lost (their stubs, bug included,
+    # are graded in their place); every other exercise keeps its points.
+    d = full("earlier_edition")
+    hunts = []
+    for lab, exercises in the_labs:
+        for e in exercises:
+            if "H" in e["id"]:
+                remove_chunk(d, lab, e["file"], e["id"])
+                hunts.append(e["id"])
+    if hunts:
+        expect("earlier_edition", hunts)
+    else:
+        shutil.rmtree(d)
 
     # Exercises to break: the first C++ and the first GLSL exercise of the first lab that has both.
     cpp = next(((lab, e) for lab, ex in the_labs for e in ex if e["file"].endswith(".cpp")), None)

@@ -46,3 +46,15 @@ def insert_after_marker(dest, lab, rel, ex_id, text):
     content = path.read_text()
     at = content.index("\n", content.index(f"// EXERCISE {ex_id}")) + 1
     path.write_text(content[:at] + text + content[at:])
+
+
+def remove_chunk(dest, lab, rel, ex_id):
+    """Takes exercise `ex_id`'s chunk out of the file, marker and all, as a file written before that
+    exercise existed; a C++ file's closing "}  // namespace" stays."""
+    path = dest / "labs" / lab / rel
+    text = path.read_text()
+    begin = text.rfind("\n", 0, text.index(f"// EXERCISE {ex_id}")) + 1
+    end = text.find("// EXERCISE ", begin + 12)
+    end = len(text) if end < 0 else text.rfind("\n", 0, end) + 1
+    close = text.rfind("}  // namespace", begin, end)
+    path.write_text(text[:begin] + (text[close:end] if close >= 0 else "") + text[end:])

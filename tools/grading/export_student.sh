@@ -24,12 +24,14 @@ if [ "$verify" = 0 ]; then
   [ "$dirty" = 0 ] || echo "export-student: note: $dirty uncommitted changes or untracked files are not exported" \
     "(the student edition is the committed tree, $(git rev-parse --short HEAD))" >&2
   git archive --format=tar HEAD -- . "${INSTRUCTOR[@]/#/:(exclude)}" | tar -xf - -C "$out"
-  # The exercise shaders as handed out (tests/stubs/NN_name/shaders/): ./workbook check records the C++
-  # exercises with them, as the grader does, so that a student's GLSL mistake cannot stop those runs.
+  # The exercise files as handed out (tests/stubs/NN_name/): ./workbook check records the C++
+  # exercises with these shaders, as the grader does, so that a student's GLSL mistake cannot stop
+  # those runs; and it fills in, from them, an exercise a file written before it was added lacks.
   for lab in "$out"/labs/[0-9][0-9]_*/; do
     name=$(basename "$lab")
     mkdir -p "$out/tests/stubs/$name/shaders"
     for f in "$lab"shaders/exercise*; do [ -f "$f" ] && cp "$f" "$out/tests/stubs/$name/shaders/"; done
+    for f in "$lab"exercise*.cpp; do [ -f "$f" ] && cp "$f" "$out/tests/stubs/$name/"; done
   done
   # The students' README: the template, with the lab table and named sections of this README.
   git show HEAD:README.md >"$out/README.md.instructor"

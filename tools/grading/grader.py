@@ -118,6 +118,22 @@ class Grader:
             return {e["id"]: build_failure(out) for e in lab["exercises"]}
         return failed
 
+    def fill_missing(self, lab, rel, content):
+        """A file written against an earlier edition of the lab: the exercises it lacks are taken from
+        the stub, so only those are lost (wb_check --fill-missing, as `check` does it: one
+        implementation, common/exercise/exercise_chunks.hpp). Returns (content, the lines that say so)."""
+        stub, tool = ROOT / "labs" / lab["name"] / rel, self.ws.judge_bin / "wb_check"
+        if not stub.is_file() or not tool.is_file():
+            return content, []
+        with tempfile.TemporaryDirectory(prefix="fill-") as tmp:
+            mine = Path(tmp) / Path(rel).name
+            mine.write_bytes(content)
+            code, out, _ = run_killable([str(tool), "--fill-missing", str(mine), str(stub), f"labs/{lab['name']}/{rel}",
+                                         f"tests/stubs/{lab['name']}/{rel}", "grader"], 30, cwd=tmp)
+            if code != 0:
+                return content, []
+            return mine.read_bytes(), [line for line in out.splitlines() if " predates exercise " in line]
+
     def list_tests(self, lab, built=True):
         exe = self.ws.build / f"lab{lab['nn']}_tests"
         if built and not exe.exists():  # the lab could not be built at all (every exercise is then marked broken)
@@ -336,7 +352,8 @@ class Grader:
                     elif found.stat().st_size > MAX_FILE_BYTES:
                         notes.append(f"labs/{lab['name']}/{rel} is over 1 MiB: the stub is graded")
                     else:
-                        files[rel] = found.read_bytes()
+                        files[rel], added = self.fill_missing(lab, rel, found.read_bytes())
+                        notes += added
                 found_files[lab["name"]] = (files, notes)
                 for rel, content in files.items():
                     self.ws.place(lab["name"], rel, content)

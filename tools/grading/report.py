@@ -41,8 +41,9 @@ _ANY_PATH = re.compile(r"(?<![\w.~-])(?:/|(?:\.{1,2}|[\w.+-]+)/)(?:[^\s/:'\"()\[
 
 def _shrunk(path, name):
     """A path that is not the student's own: its file name, but never one that could be taken for the
-    student's file (the solutions' exercise.cpp, quoted by an __has_include that probed them)."""
-    if path.startswith("labs/"):
+    student's file (the solutions' exercise.cpp, quoted by an __has_include that probed them). The
+    stubs as handed out (tests/stubs/, in every student's edition) are named as they are."""
+    if path.startswith("labs/") or (path.startswith("tests/stubs/") and ".." not in path):
         return path
     return "(a file that is not yours)" if name.startswith("exercise") else name
 

@@ -16,7 +16,7 @@ from .submission import load_labs, student_files
 # The framework's static libraries and the tests' main in a build folder (cmake/Framework.cmake).
 FRAMEWORK_LIBRARIES = ("libglad.a", "common/libwb_common.a", "tests/harness/libwb_testing.a",
                        "tests/harness/CMakeFiles/wb_testing_main.dir/main.cpp.o")
-FRAMEWORK_TARGETS = ["glad", "wb_common", "wb_testing", "wb_testing_main"]
+FRAMEWORK_TARGETS = ["glad", "wb_common", "wb_testing", "wb_testing_main", "wb_check"]
 
 
 def instructor_paths():
@@ -188,7 +188,9 @@ class Workspace:
             # run is otherwise an unknown target to the old Makefiles, which never get to regenerate
             run_checked(["cmake", "-S", str(ROOT), "-B", str(self.judge), "-DCMAKE_BUILD_TYPE=RelWithDebInfo"],
                         "configure the judge's build")
+        # (wb_check: its --fill-missing, for a file written against an earlier edition of a lab)
         targets = [t for lab in self.labs for t in (f"lab{lab['nn']}_solution", f"lab{lab['nn']}_solution_tests")]
+        targets.append("wb_check")
         if not (ROOT / "solutions").is_dir():  # a public image (PrairieLearn's): the framework alone, the
             targets = FRAMEWORK_TARGETS  # solutions come with each job (tools/grading/prairielearn)
         run_checked(["cmake", "--build", str(self.judge_bin), "-j", str(jobs), "--target"] + targets,
