@@ -234,59 +234,70 @@ double penumbraGrowthRatio(const SceneMetrics& m) {
   return slope(2) / slope(1);
 }
 
-void expectSceneMatchesGolden(const std::string& id, const std::string& name, const std::vector<std::string>& args,
-                              float tolerance, double maxFailingFraction) {
-  const fs::path out = outputDir() / ("Ex" + id + "_" + name);
-  const fs::path golden = dataFile(name + ".pfm", fs::path("tests/golden") / variant::kLab, "golden");
-  const fs::path pfm = out / "result.pfm";
+namespace {
+
+// The lab's visibility of a scene test (with `args`) at `pfm`: the image, or why there is none.
+std::string renderScene(const std::string& id, const fs::path& out, const fs::path& pfm,
+                        const std::vector<std::string>& args, FloatImage& got, RunResult& run) {
   std::vector<std::string> all = {"--size", "256x256", "--dump-visibility", pfm.string()};
   all.insert(all.end(), args.begin(), args.end());
   fs::create_directories(out);
   fs::remove(pfm);
   std::string logText;
-  RunResult run;
-  const auto ok = runIsolated(id, out, all, logText, &run);
-  if (!ok) FAIL() << ok.message();
-  FloatImage got;
+  if (const auto ok = runIsolated(id, out, all, logText, &run); !ok) return ok.message();
   try {
     got = readPfm(pfm);
   } catch (const std::exception& e) {
-    FAIL() << "ERROR: the lab's visibility could not be read: " << e.what();
+    return std::string("ERROR: the lab's visibility could not be read: ") + e.what();
   }
-  if (updatingGolden()) {
-    fs::create_directories(golden.parent_path());
-    fs::copy_file(pfm, golden, fs::copy_options::overwrite_existing);
-    GlTest::SetUpTestSuite();  // for the renderer string stored beside the golden data
-    std::ofstream(golden.parent_path() / "renderer.txt") << renderer() << "\n";
-    std::printf("updated %s\n", golden.string().c_str());
-    return;
-  }
-  FloatImage ref;
-  if (varySeed() >= 0) {  // the trusted app's render of the same variation
-    const fs::path refPfm = out / "reference_varied.pfm";
-    std::vector<std::string> all = {"--size", "256x256", "--dump-visibility", refPfm.string()};
-    all.insert(all.end(), args.begin(), args.end());
-    if (fs::exists(out / "upstream.json"))  // the inputs the graded exercise had (keepOnlyCalls)
-      all.insert(all.end(), {"--replay-exercises", (out / "upstream.json").string()});
-    fs::remove(refPfm);
-    if (runApp(out, {}, trustedExe(), all, out / "reference.log").first != 0 || !fs::exists(refPfm))
-      FAIL() << "ERROR: the reference render of the varied scene failed (a fault of the grader):\n"
-             << readFile(out / "reference.log");
-    ref = readPfm(refPfm);
-  } else {
+  return "";
+}
+
+// ./workbook golden: the render becomes the golden data, with the renderer that made it beside it.
+void updateGolden(const fs::path& pfm, const fs::path& golden) {
+  fs::create_directories(golden.parent_path());
+  fs::copy_file(pfm, golden, fs::copy_options::overwrite_existing);
+  GlTest::SetUpTestSuite();  // for the renderer string stored beside the golden data
+  std::ofstream(golden.parent_path() / "renderer.txt") << renderer() << "\n";
+  std::printf("updated %s\n", golden.string().c_str());
+}
+
+// What the render is held against: with WB_VARY_SEED, the trusted app's render of the same varied
+// scene (with the inputs the graded exercise had); else the published golden. "" or why there is none.
+std::string referenceFor(const fs::path& out, const fs::path& golden, const std::vector<std::string>& args,
+                         const std::string& id, FloatImage& ref) {
+  if (varySeed() < 0) {
     if (!fs::exists(golden))
-      FAIL() << "ERROR: no golden data " << golden << "; run ./workbook golden " << id.substr(0, 2);
+      return "ERROR: no golden data " + golden.string() + "; run ./workbook golden " + id.substr(0, 2);
     ref = readPfm(golden);
+    return "";
   }
-  if (ref.width != got.width || ref.height != got.height) FAIL() << "ERROR: golden " << golden << " has another size";
-  // A pixel fails when no reference pixel in its 3x3 neighbourhood is within `tolerance`: a shadow
-  // edge that moves by one pixel (rasterisation, a texel of a rotated map) is not an error.
+  const fs::path refPfm = out / "reference_varied.pfm";
+  std::vector<std::string> all = {"--size", "256x256", "--dump-visibility", refPfm.string()};
+  all.insert(all.end(), args.begin(), args.end());
+  if (fs::exists(out / "upstream.json"))  // the inputs the graded exercise had (keepOnlyCalls)
+    all.insert(all.end(), {"--replay-exercises", (out / "upstream.json").string()});
+  fs::remove(refPfm);
+  if (runApp(out, {}, trustedExe(), all, out / "reference.log").first != 0 || !fs::exists(refPfm))
+    return "ERROR: the reference render of the varied scene failed (a fault of the grader):\n" +
+           readFile(out / "reference.log");
+  ref = readPfm(refPfm);
+  return "";
+}
+
+// Pixels of `got` with no pixel of `ref` in its 3x3 neighbourhood within `tolerance` (a shadow edge
+// that moves by one pixel, by rasterisation or a texel of a rotated map, is no error), and pixels
+// that show a stub's placeholder.
+struct SceneDifference {
   size_t failing = 0, todo = 0;
+};
+SceneDifference differenceNear(const FloatImage& ref, const FloatImage& got, float tolerance) {
+  SceneDifference d;
   for (int y = 0; y < ref.height; ++y)
     for (int x = 0; x < ref.width; ++x) {
       const float g = got.at(x, y);
       if (isTodo(g)) {
-        ++todo;
+        ++d.todo;
         continue;
       }
       bool near = false;
@@ -295,12 +306,29 @@ void expectSceneMatchesGolden(const std::string& id, const std::string& name, co
           const int sx = std::clamp(x + dx, 0, ref.width - 1), sy = std::clamp(y + dy, 0, ref.height - 1);
           near = std::abs(g - ref.at(sx, sy)) <= tolerance;
         }
-      failing += !near;
+      d.failing += !near;
     }
-  const double fraction = double(failing + todo) / double(ref.pixels.size());
-  if (todo && fraction > maxFailingFraction) {  // a stub's stripes: no number, which would be the stubs'
+  return d;
+}
+
+}  // namespace
+
+void expectSceneMatchesGolden(const std::string& id, const std::string& name, const std::vector<std::string>& args,
+                              float tolerance, double maxFailingFraction) {
+  const fs::path out = outputDir() / ("Ex" + id + "_" + name);
+  const fs::path golden = dataFile(name + ".pfm", fs::path("tests/golden") / variant::kLab, "golden");
+  const fs::path pfm = out / "result.pfm";
+  FloatImage got, ref;
+  RunResult run;
+  if (const std::string why = renderScene(id, out, pfm, args, got, run); !why.empty()) FAIL() << why;
+  if (updatingGolden()) return updateGolden(pfm, golden);
+  if (const std::string why = referenceFor(out, golden, args, id, ref); !why.empty()) FAIL() << why;
+  if (ref.width != got.width || ref.height != got.height) FAIL() << "ERROR: golden " << golden << " has another size";
+  const SceneDifference d = differenceNear(ref, got, tolerance);
+  const double fraction = double(d.failing + d.todo) / double(ref.pixels.size());
+  if (d.todo && fraction > maxFailingFraction) {  // a stub's stripes: no number, which would be the stubs'
     std::printf("[ scene    ] %s %s: not compared: %zu pixels show the not-implemented placeholder\n", id.c_str(),
-                name.c_str(), todo);
+                name.c_str(), d.todo);
     FAIL() << placeholderVerdict(id, name, run, "compared");
   }
   std::printf("[ scene    ] %s %s: %.3f%% of pixels differ from %s (allowed %.3f%%)\n", id.c_str(), name.c_str(),

@@ -16,22 +16,16 @@
 //                    solution's as the judge; `./workbook check` runs both the same way)
 #include "common/base/variant.hpp"
 #include "common/exercise/crash_report.hpp"
-#include "common/exercise/glsl_harness.hpp"
-#include "tests/harness/attribution.hpp"
-#include "tests/harness/check_page.hpp"
-#include "tests/harness/diagnosis.hpp"
+#include "common/exercise/exercise_chunks.hpp"
+#include "tests/harness/check_table.hpp"
 #include "tests/harness/harness.hpp"
 
-#include <nlohmann/json.hpp>
-
-#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <map>
-#include <regex>
 #include <set>
+#include <string>
 
 namespace fs = std::filesystem;
 
@@ -39,262 +33,17 @@ namespace wb::test {
 extern bool g_updateGolden;
 }
 
-namespace {
-
-std::vector<wb::test::ManifestEntry> readManifest() {
-  std::ifstream in(fs::path(wb::variant::kLabDir) / "exercises.json");
-  std::vector<wb::test::ManifestEntry> out;
-  const auto manifest = nlohmann::json::parse(in);  // keep it alive while iterating
-  for (const auto& e : manifest.at("exercises"))
-    out.push_back({e.at("id").get<std::string>(), e.at("title").get<std::string>(), e.at("file").get<std::string>()});
-  return out;
-}
-
-// The grader's convention (tools/grading/outcomes.py): a test that draws a scene has Scene or Measured
-// in its name, and no other test has (framework.Grading.TestsThatRunTheAppSaySceneOrMeasured keeps it so).
-bool drawsScene(const std::string& test) {
-  return test.find("Scene") != std::string::npos || test.find("Measured") != std::string::npos;
-}
-
-// "Ex01_3_WorldToShadow" -> "01.3"; a hunt\'s "Ex07_H1_..." -> "07.H1"
-std::string exerciseOf(const std::string& testName) {
-  static const std::regex re(R"(^Ex(\d\d)_(\d+|x|H\d+)_)");
-  std::smatch m;
-  return std::regex_search(testName, m, re) ? m[1].str() + "." + m[2].str() : "";
-}
-
-// A line of a diagnosis that names a known mistake (diagnosis.cpp).
-bool namesKnownMistake(const std::string& line) { return line.rfind("looks like a known mistake", 0) == 0; }
-
-// One test's value can fit several known mistakes ("one of these: - A - B"), and another test's only
-// one of them ("A"): the second narrows the first, which is then left out, so that no hint is shown twice.
-void narrowHints(std::vector<std::string>& details) {
-  const std::string one = "looks like a known mistake: ", several = "looks like a known mistake, one of these:";
-  std::vector<std::string> named;
-  for (const auto& line : details)
-    if (line.rfind(one, 0) == 0) named.push_back(line.substr(one.size()));
-  details.erase(std::remove_if(details.begin(), details.end(),
-                               [&](const std::string& line) {
-                                 return line.rfind(several, 0) == 0 &&
-                                        std::any_of(named.begin(), named.end(), [&](const std::string& n) {
-                                          return line.find("- " + n) != std::string::npos;
-                                        });
-                               }),
-                details.end());
-}
-
-// The table's last line: how many exercises pass, counted as the grader will count them. Those that
-// pass their own tests while their scene waits on another count (the grader draws their scenes with
-// the reference for the others); those blocked by another are not known before it passes.
-std::string summaryLine(int done, size_t total, int waiting, const std::vector<std::string>& pending,
-                        const std::vector<std::string>& blocked) {
-  std::string line = std::to_string(done) + " of " + std::to_string(total) + " exercises pass their tests";
-  if (waiting)
-    line += " (" + std::to_string(waiting) + " by their own tests: the grader draws their scenes with the " +
-            "reference for the others, and gives them their points if those pass)";
-  auto joined = [](const std::vector<std::string>& ids) {
-    std::string all;
-    for (const auto& id : ids) all += (all.empty() ? "" : ", ") + id;
-    return all;
-  };
-  if (!pending.empty())
-    line += "; " + joined(pending) + (pending.size() == 1 ? " is" : " are") +
-            " measured by scenes alone, which wait on other exercises: neither passed nor failed yet";
-  if (!blocked.empty()) {
-    const std::string ids = joined(blocked);
-    const bool one = blocked.size() == 1;
-    line += std::string("; ") + ids + (one ? " is" : " are") + " blocked by another exercise and cannot be " +
-            "checked before that one passes (the grader checks " + (one ? "it" : "them") + " with the reference " +
-            "for the others, so " + (one ? "it" : "they") + " may still earn " + (one ? "its" : "their") + " points)";
-  }
-  return line + ".";
-}
-
-// Where exercise `e` starts in the file being judged ("labs/02_bias/shaders/exercise.glsl:16"): the
-// line of its marker, so that a WRONG verdict says where to look; "" when the file has none.
-std::string exerciseLine(const wb::test::ManifestEntry& e) {
-  const char* submission = std::getenv("WB_SUBMISSION_DIR");
-  const fs::path dir = submission && *submission ? fs::path(submission) : fs::path(wb::variant::kLabDir);
-  std::ifstream in(dir / e.file);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const size_t at = wb::findMarker(text, e.id);
-  if (at == std::string::npos) return "";
-  const int line = 1 + int(std::count(text.begin(), text.begin() + long(at), '\n'));
-  return "labs/" + std::string(wb::variant::kLab) + "/" + e.file + ":" + std::to_string(line);
-}
-
-// Collects the first failure of each test and prints the per-exercise table at the end.
-class CheckListener : public ::testing::EmptyTestEventListener {
- public:
-  CheckListener(bool expectStubs, std::string signatures)
-      : expectStubs_(expectStubs), signatures_(std::move(signatures)) {}
-  int exitCode = 0;
-  std::string expectMistake;  // --expect-mistake ID: a mutant of exercise ID runs (ctest's mutant tests)
-  std::string expectHint;     // --expect-hint TEXT: the hint it must get ("": none, and no other)
-
-  void OnTestStart(const ::testing::TestInfo& info) override {
-    current_ = exerciseOf(info.name());
-    ran_.insert(current_);
-    test_ = std::string(info.test_suite_name()) + "." + info.name();
-    if (!drawsScene(test_)) withOwnTests_.insert(current_);
-  }
-  void OnTestPartResult(const ::testing::TestPartResult& r) override {
-    if (!r.failed()) return;
-    auto d = wb::test::diagnose(test_, r.message());
-    if (!signatures_.empty() && d.got && !signed_.count(test_)) {
-      signed_.insert(test_);
-      std::ofstream(signatures_, std::ios::app) << nlohmann::json{{"test", test_}, {"value", *d.got}}.dump() << "\n";
-    }
-    // Keep the most serious diagnosis of the exercise: ERROR > WRONG > NOT IMPLEMENTED > blocked. A test
-    // that finds it WRONG, or still the stub, says more than a scene blocked by another exercise, and
-    // is what the grader, drawing the others with the reference, finds too.
-    auto rank = [](const wb::test::Diagnosis& x) {
-      if (x.headline.rfind("ERROR: blocked by", 0) == 0) return 1.0;
-      return x.verdict == "ERROR" ? 3.0 : x.verdict == "NOT IMPLEMENTED" ? 1.5 : 2.0;
-    };
-    static const std::regex blockedRe(R"(^ERROR: blocked by ([0-9.xH, ]+):)"), kListSeparator(", ");
-    std::smatch by;
-    if (!drawsScene(test_)) {
-      ownFailed_.insert(current_);
-    } else if (std::regex_search(d.headline, by, blockedRe)) {
-      std::string& list = blockers_[current_];
-      for (std::sregex_token_iterator k(by[1].first, by[1].second, kListSeparator, -1), end; k != end; ++k)
-        if ((", " + list + ",").find(", " + k->str() + ",") == std::string::npos)
-          list += (list.empty() ? "" : ", ") + k->str();
-    } else {
-      unblocked_.insert(current_);
-    }
-    if (current_.empty()) {  // a test of the lab as a whole (its files, markers, manifest), not of one exercise
-      if (others_.empty() || others_.back().first != test_) others_.emplace_back(test_, std::move(d));
-      return;
-    }
-    // A known mistake recognised by any of the exercise's tests is named, and a picture any of them left
-    // is shown, whichever test's failure is shown.
-    for (const auto& line : d.details)
-      if ((namesKnownMistake(line) || line.rfind("picture: ", 0) == 0) &&
-          std::find(hints_[current_].begin(), hints_[current_].end(), line) == hints_[current_].end())
-        hints_[current_].push_back(line);
-    auto& slot = first_[current_];
-    if (slot.verdict.empty() || rank(d) > rank(slot)) slot = std::move(d);
-  }
-  void OnTestProgramEnd(const ::testing::UnitTest&) override {
-    const auto manifest = readManifest();
-    wb::test::attribute(manifest, {first_, ownFailed_, blockers_, unblocked_, withOwnTests_});
-    for (auto& [id, lines] : hints_)
-      for (const auto& line : lines)
-        if (auto& d = first_[id];
-            d.verdict == "WRONG" && std::find(d.details.begin(), d.details.end(), line) == d.details.end())
-          d.details.push_back(line);
-    for (auto& [id, d] : first_) narrowHints(d.details);
-    if (wb::test::tapeMode() == wb::test::TapeMode::Replay)
-      std::printf("\nLab %s: judged from what your build produced (%s)\n", wb::variant::kLab,
-                  wb::test::tapeDir().string().c_str());
-    else
-      std::printf("\nLab %s: %s build\n", wb::variant::kLab, wb::variant::kName);
-    std::printf("  %-5s %-16s %s\n", "ID", "status", "exercise (then what was found)");
-    int done = 0, waiting = 0;
-    std::vector<std::string> pending;     // measured by their scenes alone, which wait on other exercises
-    std::vector<wb::test::PageRow> page;  // WB_CHECK_HTML: the same table as a page (check --html)
-    nlohmann::json verdicts = nlohmann::json::object();  // WB_CHECK_JSON: for the app's live checks
-    for (const auto& e : manifest) {
-      const wb::test::Diagnosis d = first_.count(e.id) ? first_[e.id] : wb::test::Diagnosis{};
-      const std::string status = d.verdict.empty()                ? "passes its tests"
-                                 : d.verdict == "WAITS"           ? "passes own tests"
-                                 : d.verdict == "WAITING"         ? "waiting"
-                                 : d.verdict == "NOT IMPLEMENTED" ? "not implemented"
-                                 : d.verdict == "ERROR"           ? "error"
-                                                                  : "wrong";
-      done += d.verdict.empty() || d.verdict == "WAITS";
-      waiting += d.verdict == "WAITS";
-      if (d.verdict == "WAITING") pending.push_back(e.id);
-      if (expectStubs_ && status != "not implemented") exitCode = 1;
-      // The whole title on the verdict's line; what was found below it, where it has room.
-      std::printf("  %-5s %-16s %s\n", e.id.c_str(), status.c_str(), e.title.c_str());
-      if (ran_.count(e.id)) verdicts[e.id] = {{"status", status}, {"headline", d.headline}};
-      if (!d.headline.empty()) std::printf("        %s\n", d.headline.c_str());
-      for (const auto& line : d.details) std::printf("          %s\n", line.c_str());
-      const std::string where = d.verdict == "WRONG" ? exerciseLine(e) : "";
-      if (!where.empty()) std::printf("          your code: %s\n", where.c_str());
-      page.push_back({e.id, status, e.title, d.headline, d.details, where});
-    }
-    for (const auto& [test, d] : others_) {  // they fail the whole check: say so, and why
-      std::printf("  also failing, for the lab as a whole: %s\n        %s\n", test.c_str(), d.headline.c_str());
-      exitCode = 1;
-    }
-    if (const char* file = std::getenv("WB_CHECK_JSON"); file && *file) std::ofstream(file) << verdicts.dump();
-    if (!expectMistake.empty()) {
-      exitCode = judgeMutant(first_.count(expectMistake) ? first_[expectMistake] : wb::test::Diagnosis{});
-      return;
-    }
-    if (!expectStubs_ && done != int(manifest.size())) exitCode = 1;
-    std::vector<std::string> blocked;  // (their points are not known before their blockers pass)
-    for (const auto& e : manifest)
-      if (first_.count(e.id) && first_[e.id].headline.rfind("ERROR: blocked by", 0) == 0) blocked.push_back(e.id);
-    const std::string summary = summaryLine(done, manifest.size(), waiting, pending, blocked);
-    std::printf("  %s%s\n", summary.c_str(),
-                expectStubs_ ? (exitCode ? " Some stubs are not reported as NOT IMPLEMENTED."
-                                         : " Every stub reports NOT IMPLEMENTED.")
-                             : "");
-    if (const char* file = std::getenv("WB_CHECK_HTML"); file && *file) {
-      if (!wb::test::writeCheckPage(file, "Lab " + std::string(wb::variant::kLab) + ": check", page, summary))
-        std::printf("  (the page %s could not be written)\n", file);
-    }
-  }
-
- private:
-  // A mutant of exercise expectMistake must be caught as WRONG, with its own hint or none, never another's:
-  // every hint shown names it (alone, or among the "one of these" that give the same value).
-  int judgeMutant(const wb::test::Diagnosis& d) const {
-    std::vector<std::string> hints;
-    for (const auto& line : d.details)
-      if (namesKnownMistake(line)) hints.push_back(line);
-    const bool caught = d.verdict == "WRONG";
-    const auto other = std::find_if(hints.begin(), hints.end(),
-                                    [&](const std::string& h) { return h.find(expectHint) == std::string::npos; });
-    const bool hintRight = expectHint.empty() ? hints.empty() : !hints.empty() && other == hints.end();
-    const std::string verdict =
-        caught ? "caught as WRONG" : "NOT CAUGHT (" + (d.verdict.empty() ? "passes" : d.verdict) + ")";
-    const std::string hint = hintRight       ? (hints.empty() ? "none (none expected)" : "right")
-                             : hints.empty() ? "MISSING: " + expectHint
-                                             : "WRONG: " + (other != hints.end() ? *other : hints[0]);
-    // Attribution, where other exercises' tests ran too (the whole lab, tools/authoring/mutant_matrix.py
-    // --whole-lab): no other exercise may be marked wrong; "blocked by" (an ERROR) is allowed.
-    std::string blamed;
-    for (const auto& [id, diagnosis] : first_)
-      if (id != expectMistake && diagnosis.verdict == "WRONG") blamed += (blamed.empty() ? "" : ", ") + id;
-    std::printf("mutant of %s: %s; hint %s; %s\n", expectMistake.c_str(), verdict.c_str(), hint.c_str(),
-                blamed.empty() ? "no other exercise marked wrong" : ("ALSO MARKED WRONG: " + blamed).c_str());
-    return caught && hintRight && blamed.empty() ? 0 : 1;
-  }
-
-  bool expectStubs_;
-  std::string signatures_;  // --signatures F: each failing test's value, for tools/authoring/make_hints.py
-  std::set<std::string> signed_;
-  std::set<std::string> ran_;  // the exercises that had a test run
-  std::string current_;        // the exercise of the running test
-  std::string test_;           // and the test ("Suite.Name")
-  std::map<std::string, wb::test::Diagnosis> first_;
-  std::set<std::string> ownFailed_;              // the exercises that fail a test that draws no scene
-  std::set<std::string> withOwnTests_;           // the exercises that ran a test that draws no scene
-  std::map<std::string, std::string> blockers_;  // what blocks each exercise's scene tests ("07.4", "09.2, 09.3")
-  std::set<std::string> unblocked_;              // the exercises with a scene test that fails on its own
-  std::map<std::string, std::vector<std::string>> hints_;  // the known mistakes and pictures of each exercise's tests
-  std::vector<std::pair<std::string, wb::test::Diagnosis>> others_;  // failing tests of no one exercise
-};
-
-}  // namespace
-
 // The manifest (labs/NN/exercises.json) is the one list of exercises: every exercise has tests, every
 // test belongs to an exercise, and every exercise has its "// EXERCISE NN.k" marker in its file.
 TEST(Manifest, EveryExerciseHasTestsAndEveryTestAnExercise) {
   std::set<std::string> ids, tested;
-  for (const auto& e : readManifest()) ids.insert(e.id);
+  for (const auto& e : wb::test::readManifest()) ids.insert(e.id);
   const auto* unit = ::testing::UnitTest::GetInstance();
   for (int s = 0; s < unit->total_test_suite_count(); ++s) {
     const auto* suite = unit->GetTestSuite(s);
     if (std::string(suite->name()) == "Manifest") continue;
     for (int t = 0; t < suite->total_test_count(); ++t) {
-      const std::string name = suite->GetTestInfo(t)->name(), id = exerciseOf(name);
+      const std::string name = suite->GetTestInfo(t)->name(), id = wb::test::exerciseOf(name);
       EXPECT_TRUE(ids.count(id)) << "WRONG: test " << suite->name() << "." << name
                                  << " names no exercise of the manifest";
       tested.insert(id);
@@ -304,7 +53,7 @@ TEST(Manifest, EveryExerciseHasTestsAndEveryTestAnExercise) {
 }
 
 TEST(Manifest, EveryExerciseHasItsMarker) {
-  for (const auto& e : readManifest()) {
+  for (const auto& e : wb::test::readManifest()) {
     std::ifstream in(fs::path(wb::variant::kLabDir) / e.file);
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     EXPECT_NE(wb::findMarker(text, e.id), std::string::npos)
@@ -345,27 +94,32 @@ class RunnerPrinter : public ::testing::EmptyTestEventListener {
   }
 };
 
-int main(int argc, char** argv) {
-  wb::installCrashReport();  // a crash in an exercise names its file:line
-  ::testing::InitGoogleTest(&argc, argv);
+namespace {
+
+// The modes and options of the header above.
+struct Options {
   bool check = false, expectStubs = false;
   std::string requests, signatures, expectMistake, expectHint;
+};
+
+// Reads argv (after GoogleTest took its own); false, with the message printed, for an unknown option.
+bool parseOptions(int argc, char** argv, Options& o) {
   for (int i = 1; i < argc; ++i) {
     const bool runner = !std::strcmp(argv[i], "--runner"), judge = !std::strcmp(argv[i], "--judge");
     if ((runner || judge) && i + 1 < argc)
       wb::test::openTape(runner ? wb::test::TapeMode::Record : wb::test::TapeMode::Replay, argv[++i]);
     else if (!std::strcmp(argv[i], "--requests") && i + 1 < argc)
-      requests = argv[++i];
+      o.requests = argv[++i];
     else if (!std::strcmp(argv[i], "--signatures") && i + 1 < argc)
-      check = true, signatures = argv[++i];
+      o.check = true, o.signatures = argv[++i];
     else if (!std::strcmp(argv[i], "--check"))
-      check = true;
+      o.check = true;
     else if (!std::strcmp(argv[i], "--expect-mistake") && i + 1 < argc)
-      check = true, expectMistake = argv[++i];
+      o.check = true, o.expectMistake = argv[++i];
     else if (!std::strcmp(argv[i], "--expect-hint") && i + 1 < argc)
-      expectHint = argv[++i];
+      o.expectHint = argv[++i];
     else if (!std::strcmp(argv[i], "--expect-stubs"))
-      check = expectStubs = true;
+      o.check = o.expectStubs = true;
     else if (!std::strcmp(argv[i], "--update-golden"))
       wb::test::g_updateGolden = true;
     else if (!std::strcmp(argv[i], "--as-student-edition"))
@@ -376,35 +130,51 @@ int main(int argc, char** argv) {
                    "TEXT, --update-golden, --as-student-edition, --runner DIR, "
                    "--requests F, --judge DIR, --signatures F, --gtest_*)\n",
                    argv[0], argv[i]);
-      return 2;
+      return false;
     }
   }
+  return true;
+}
+
+// --runner: the tests run and record; the log says which ran, and nothing is claimed.
+int runAsRunner(::testing::TestEventListeners& listeners) {
+  delete listeners.Release(listeners.default_result_printer());
+  listeners.Append(new RunnerPrinter);
+  [[maybe_unused]] const int failed = RUN_ALL_TESTS();
+  return 0;  // (a runner claims nothing: its failures are no verdict, nor is its exit code)
+}
+
+// --check and its kinds: the per-exercise table (check_table.hpp) instead of gtest's printer.
+int runWithTable(::testing::TestEventListeners& listeners, const Options& o) {
+  delete listeners.Release(listeners.default_result_printer());
+  int exitCode = 0;
+  listeners.Append(wb::test::makeCheckListener(o.expectStubs, o.signatures, o.expectMistake, o.expectHint, exitCode));
+  const int gtest = RUN_ALL_TESTS();
+  if (!o.expectMistake.empty()) return exitCode;  // (the mutant's tests fail: that is the point)
+  return exitCode ? exitCode : (o.expectStubs ? 0 : gtest);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  wb::installCrashReport();  // a crash in an exercise names its file:line
+  ::testing::InitGoogleTest(&argc, argv);
+  Options o;
+  if (!parseOptions(argc, argv, o)) return 2;
   if (wb::test::g_updateGolden && std::string(wb::variant::kName) != "solution") {
     std::fprintf(stderr, "%s: golden data is generated from the solution build only\n", argv[0]);
     return 2;
   }
-  if (!requests.empty()) {
+  if (!o.requests.empty()) {
     if (wb::test::tapeMode() != wb::test::TapeMode::Record) {
       std::fprintf(stderr, "%s: --requests needs --runner DIR\n", argv[0]);
       return 2;
     }
-    return wb::test::recordRequestedRuns(requests);
+    return wb::test::recordRequestedRuns(o.requests);
   }
   auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
   if (const char* progress = std::getenv("WB_PROGRESS_FILE"); progress && *progress)
     listeners.Append(new ProgressListener(progress));
-  if (wb::test::tapeMode() == wb::test::TapeMode::Record && !check) {
-    delete listeners.Release(listeners.default_result_printer());
-    listeners.Append(new RunnerPrinter);
-    [[maybe_unused]] const int failed = RUN_ALL_TESTS();
-    return 0;  // (a runner claims nothing: its failures are no verdict, nor is its exit code)
-  }
-  if (!check) return RUN_ALL_TESTS();
-  delete listeners.Release(listeners.default_result_printer());
-  auto* listener = new CheckListener(expectStubs, signatures);
-  listener->expectMistake = expectMistake, listener->expectHint = expectHint;
-  listeners.Append(listener);
-  const int gtest = RUN_ALL_TESTS();
-  if (!expectMistake.empty()) return listener->exitCode;  // (the mutant's tests fail: that is the point)
-  return listener->exitCode ? listener->exitCode : (expectStubs ? 0 : gtest);
+  if (wb::test::tapeMode() == wb::test::TapeMode::Record && !o.check) return runAsRunner(listeners);
+  return o.check ? runWithTable(listeners, o) : RUN_ALL_TESTS();
 }
