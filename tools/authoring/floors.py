@@ -1,6 +1,9 @@
 #!/usr/bin/env python3
 """The floors of common/: every #include "common/..." must point at the including file's own floor or
-one below it (common/floors.txt lists them, bottom first).
+one below it (common/floors.txt lists them, bottom first). The labs stand above every floor: a lab's
+files (labs/*/, solutions/*/) include the framework's floors and the lab's own files, nothing else
+(not tests/ or tools/, not another lab's); its main.cpp includes common/shell/lab.hpp, and beside it
+only headers it uses (one of the names a header declares appears in main.cpp).
 
   floors.py [ROOT]               check; exit 1 naming each include that runs up
   floors.py --self-test          prove the check fails on an include that runs up, a forwarding header
@@ -84,8 +87,43 @@ def problems(root):
     return found
 
 
+DECLARED = re.compile(r"^(?:struct|class|enum(?: class)?|using)\s+(\w+)|^[\w:<>,*& ]+?[\s*&](\w+)\s*\(", re.M)
+
+
+def declared_names(header):
+    """The names a header declares at its outer level (types, aliases, functions): lines that start
+    in column 0 (a namespace's contents are not indented in this code base)."""
+    text = re.sub(r"//[^\n]*", "", header.read_text(errors="replace"))
+    return {a or b for a, b in DECLARED.findall(text)} - {"namespace", "return", "operator"}
+
+
+def lab_problems(root):
+    """One line per include of a lab's files that reaches outside the framework and the lab, and per
+    main.cpp that misses common/shell/lab.hpp or includes a header it does not use."""
+    levels = {name: i for i, (name, _) in enumerate(read_floors(root))}
+    found = []
+    for folder in sorted([*(root / "labs").glob("[0-9][0-9]_*"), *(root / "solutions").glob("[0-9][0-9]_*")]):
+        own = {p.name for d in (root / "labs" / folder.name, folder) if d.is_dir() for p in d.iterdir()}
+        for f in sorted(p for p in folder.iterdir() if p.suffix in SOURCES and p.is_file()):
+            text, rel = f.read_text(errors="replace"), f.relative_to(root).as_posix()
+            for m in re.finditer(r'^\s*#\s*include\s+"([^"]+)"', text, re.M):
+                target, line = m.group(1), text.count("\n", 0, m.start()) + 1
+                framework = target.startswith("common/") and floor_of(target[7:], levels) is not None
+                if not framework and target not in own:
+                    found.append(f'{rel}:{line}: includes "{target}": a lab includes the framework\'s floors '
+                                 "(common/<floor>/...) and its own files only")
+                elif framework and f.name == "main.cpp" and target != "common/shell/lab.hpp" and \
+                        (root / target).is_file():
+                    names = declared_names(root / target)
+                    if not any(re.search(rf"\b{re.escape(n)}\b", text) for n in names):
+                        found.append(f'{rel}:{line}: includes "{target}" but uses nothing it declares')
+            if f.name == "main.cpp" and '#include "common/shell/lab.hpp"' not in text:
+                found.append(f"{rel}: a lab's main.cpp includes common/shell/lab.hpp (the lab API)")
+    return found
+
+
 def check(root):
-    found = problems(root)
+    found = problems(root) + lab_problems(root)
     for p in found:
         print(p)
     n = len(includes(root))
@@ -101,19 +139,27 @@ def self_test(root):
         "a forwarder used inside a floor": ("scene/camera.hpp", '#include "common/error.hpp"\n', "in no floor"),
         "a file outside the floors": ("extra/stray.cpp", "int x;\n", "outside every floor"),
         "a library a floor must not use": ("base/strf.hpp", "#include <imgui.h>\n", "must not use"),
+        "a lab reaching into tests/": ("../labs/01_depth_map/main.cpp", '#include "tests/harness/harness.hpp"\n',
+                                       "its own files only"),
+        "a lab reaching into another": ("../labs/01_depth_map/main.cpp", '#include "../02_bias/exercise.hpp"\n',
+                                        "its own files only"),
+        "a lab including what it does not use": ("../labs/01_depth_map/main.cpp",
+                                                 '#include "common/truth/soft_shadows.hpp"\n', "uses nothing"),
     }
     for name, (rel, text, want) in cases.items():
         with tempfile.TemporaryDirectory() as tmp:
             copy = pathlib.Path(tmp)
             shutil.copytree(root / "common", copy / "common")
+            for top in ("labs", "solutions"):
+                shutil.copytree(root / top, copy / top, ignore=shutil.ignore_patterns("images", "*.png", "*.pfm"))
             target = copy / "common" / rel
             target.parent.mkdir(parents=True, exist_ok=True)
             target.write_text(text + (target.read_text() if target.exists() else ""))
-            found = problems(copy)
+            found = problems(copy) + lab_problems(copy)
             hit = any(want in p for p in found)
             print(f"self-test: {name}: {'found' if hit else 'NOT FOUND'} ({len(found)} problems)")
             ok &= hit
-    clean = problems(root)
+    clean = problems(root) + lab_problems(root)
     print(f"self-test: this tree: {len(clean)} problems")
     return 0 if ok and not clean else 1
 
