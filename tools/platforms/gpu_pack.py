@@ -44,9 +44,9 @@ SOURCES = [
     ("solutions", "the reference's shaders (isolated GLSL exercises) and exercise files"),
     ("shaders", "the shared GLSL includes"),
     ("scenes", "the scenes the tests and the labs render"),
-    ("tests", "golden/, hidden/ and their calls, hints/, truth/ (truth.py and its techniques), mutants/, and "
+    ("tests", "golden/, hidden/ and their calls, hints/, mutants/, and "
               "framework/'s scripts of the mutants.* tests"),
-    ("tools", "authoring/mutant_matrix.py (mutants.upstream_mistakes_blame_one_exercise, labelled mutants), and "
+    ("tools", "truth/ (truth.py, its scenes and techniques), authoring/mutant_matrix.py (mutants.upstream_mistakes_blame_one_exercise, labelled mutants), and "
               "showcase/, the showcase's own folder (its kLabDir)"),
 ]
 # Not read by any test: the handouts' pictures, and Python's caches.

@@ -3,8 +3,8 @@
 
     truth.py BUILD [--table FILE.md] [--lab NN] [--technique NAME] [--mutant NN_name/MUTANT]
 
-For each technique (tests/truth/techniques.json) and each generated scene of a light type it
-supports (tests/truth/scenes.py, fixed seeds), the lab's solution renders the scene headlessly with
+For each technique (tools/truth/techniques.json) and each generated scene of a light type it
+supports (tools/truth/scenes.py, fixed seeds), the lab's solution renders the scene headlessly with
 --metrics and writes its record; the measurements there are compared with the technique's bounds:
 
   area    the drawn shadow's area over the exact one (light-facing pixels drawn below 0.5 against
@@ -179,8 +179,8 @@ def main():
         print("FAIL", f)
     if args.table:
         pathlib.Path(args.table).write_text(
-            "# The truth table\n\nMade by `./workbook truth --table` (tests/truth/truth.py) on the generated scenes "
-            "of tests/truth/scenes.py, at " + SIZE + " with each technique's settings below; "
+            "# The truth table\n\nMade by `./workbook truth --table` (tools/truth/truth.py) on the generated scenes "
+            "of tools/truth/scenes.py, at " + SIZE + " with each technique's settings below; "
             "see [docs/truth.md](truth.md) for how each number is measured.\n\n## Bounds\n\n" + bounds +
             "\n\n## Measured\n\n" + body + "\n")
         print("wrote", args.table)

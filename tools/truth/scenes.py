@@ -92,7 +92,7 @@ def generate(light_type, seed):
             floating = (centre, radius)
     yaw = round(rng.uniform(0, 360), 1)
     inside, eye = _inside_bookmark(light, *floating)
-    scene = {"comment": f"truth suite: {light_type} scene {seed} (tests/truth/scenes.py)", "objects": objects,
+    scene = {"comment": f"truth suite: {light_type} scene {seed} (tools/truth/scenes.py)", "objects": objects,
              "lights": [light],
              "cameras": [{"name": "overview", "target": [0, 0.3, 0], "distance": 10.5, "yaw": yaw, "pitch": 52,
                           "fov": 50}, inside]}
