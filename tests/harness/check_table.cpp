@@ -194,11 +194,14 @@ class CheckListener : public ::testing::EmptyTestEventListener {
       if (expectStubs_ && status != "not implemented") exitCode = 1;
       // The whole title on the verdict's line; what was found below it, where it has room.
       std::printf("  %-5s %-16s %s\n", e.id.c_str(), status.c_str(), e.title.c_str());
-      if (ran_.count(e.id)) verdicts[e.id] = {{"status", status}, {"headline", d.headline}};
-      if (!d.headline.empty()) std::printf("        %s\n", d.headline.c_str());
-      for (const auto& line : d.details) std::printf("          %s\n", line.c_str());
       const std::string where = d.verdict == "WRONG" ? exerciseLine(e) : "";
-      if (!where.empty()) std::printf("          your code: %s\n", where.c_str());
+      // What is printed under the row, line by line: the grader shows the same (WB_CHECK_JSON's "lines").
+      std::vector<std::string> lines;
+      if (!d.headline.empty()) lines.push_back(d.headline);
+      for (const auto& line : d.details) lines.push_back("  " + line);
+      if (!where.empty()) lines.push_back("  your code: " + where);
+      for (const auto& line : lines) std::printf("        %s\n", line.c_str());
+      if (ran_.count(e.id)) verdicts[e.id] = {{"status", status}, {"headline", d.headline}, {"lines", lines}};
       page.push_back({e.id, status, e.title, d.headline, d.details, where});
     }
     for (const auto& [test, d] : others_) {  // they fail the whole check: say so, and why

@@ -40,6 +40,7 @@ class Grader:
         self.test_jobs = 2 * self.build_jobs if sandbox.mode != "session" else 1
         self.build_timeouts = 0  # how many builds of this submission were stopped
         self.printed = {}  # exercise tag ("01_1") -> MB its runner printed, where the grader cut its output
+        self.explained = {}  # (lab nn, exercise id) -> check's lines for its visible run (run_tests)
         # A fresh variation of every scene per submission, unless the instructor fixes one to reproduce a grade.
         self.vary_seed = int(os.environ.get("WB_GRADE_SEED") or secrets.randbelow(1 << 32))
         # Where the time goes, summed over exercises graded at once: every build (compile and link),
@@ -150,14 +151,15 @@ class Grader:
                 tests.append(suite + line.split()[0])
         return tests
 
-    def run_tests(self, lab, gfilter, tag, held_out=False, replay_uses=()):
+    def run_tests(self, lab, gfilter, tag, held_out=False, replay_uses=(), explain=None):
         """Grades one exercise's tests: (passed, failures [(test, message)], runner output). The
         student's test binary runs as the *runner* in the sandbox and records what its C++ exercises
         produce on a tape; the solution's test binary, the *judge*, replays that tape, draws every
         scene itself (with the student's recorded C++ results, or the student's GLSL chunk) and
         decides. The runner's exit code, output and files claim nothing (tests/harness/tape.hpp).
         Held-out tests are in the judge only: a planning pass of the judge says which lab runs the
-        runner must record (`held_out`)."""
+        runner must record (`held_out`). `explain`: the exercise whose lines of check's table the
+        student is shown (self.explained), for a visible run."""
         runner = self.ws.build / f"lab{lab['nn']}_tests"
         judge = self.ws.judge_bin / f"lab{lab['nn']}_solution_tests"
         uid = self.ws.heldout_uid if held_out else self.ws.uid  # (held-out inputs: not for a visible run)
@@ -195,10 +197,18 @@ class Grader:
         if cut:  # (a flood is graded as it ended; the student is told that its output was cut)
             self.printed[tag.rsplit("_", 1)[0]] = int(cut.group(1))
         copy_tape(tape, judged / "tape")
-        report = judged / "report.json"
+        if stopped and explain:  # (the judge words a stopped runner as check does: tests/harness/tape.cpp)
+            (judged / "tape" / "stopped.txt").write_text(
+                f"Ex{explain.replace('.', '_')}\t{stopped[0][1].removeprefix('ERROR: ')}\n")
+        report, verdicts = judged / "report.json", judged / "verdicts.json"
         t0, seconds = time.time(), self.limit(self.timeout)
+        # --check: the judge also writes check's table for this exercise (WB_CHECK_JSON), whose lines the
+        # student is shown, as check shows them (the verdict's words are check's: one definition).
         jcode, jout, jtimed = run_killable([str(judge), f"--gtest_filter={gfilter}", "--judge", str(judged / "tape"),
-                                            f"--gtest_output=json:{report}"], seconds, env=jenv, cwd=judged)
+                                            f"--gtest_output=json:{report}"] + (["--check"] if explain else []),
+                                           seconds, env=dict(jenv, WB_CHECK_JSON=str(verdicts)), cwd=judged)
+        if explain and not held_out:
+            self.explained[(lab["nn"], explain)] = explanation(verdicts, explain)
         self.count("judge", t0)
         if jtimed and seconds < self.timeout:
             return False, stopped + [("", f"ERROR: the judge had not finished at the time limit of the whole job "
@@ -260,7 +270,8 @@ class Grader:
             msg = broken[ex_id]
             msg = msg if msg.startswith("ERROR") else f"ERROR: does not compile: {first_line(msg)}\n{msg}"
             return False, [("", msg)], [], None, has_hidden
-        ok, failures, _ = self.run_tests(lab, f"*.Ex{tag}_*-Hidden*.*", f"{tag}_visible", replay_uses=replay_uses)
+        ok, failures, _ = self.run_tests(lab, f"*.Ex{tag}_*-Hidden*.*", f"{tag}_visible", replay_uses=replay_uses,
+                                         explain=ex_id)
         hidden_result = None
         if has_hidden and any("timed out after" in m for _, m in failures):  # another wait would tell nothing new
             hidden_result = (False, [("", "ERROR: not run: the exercise's other tests timed out")], "")
@@ -404,9 +415,21 @@ class Grader:
                     printed = [f"your tests printed {mb} MB while they ran: the grader kept the first and last "
                                "512 KB of it and left the rest out (a print in a loop?)"] if mb is not None else []
                     results.add(lab, e, ok, failures, kept, notes + printed, hidden_result=hidden_result,
-                                hidden=has_hidden)
+                                hidden=has_hidden, explained=self.explained.pop((lab["nn"], e["id"]), None))
             results.timing["tests"] = time.time() - t_tests
             results.timing.update(self.spent)
 
 
 UNTOUCHED = "NOT IMPLEMENTED: the lab's exercise files are the stubs as handed out"
+
+
+def explanation(verdicts, ex_id):
+    """Exercise `ex_id`'s row of check's table, as the judge wrote it (WB_CHECK_JSON): its status and
+    the lines printed under it; None when the judge wrote none (it could not finish)."""
+    try:
+        row = json.loads(verdicts.read_text()).get(ex_id)
+    except (OSError, ValueError):
+        return None
+    if not isinstance(row, dict) or not isinstance(row.get("lines"), list):
+        return None
+    return {"status": str(row.get("status", "")), "lines": [str(line) for line in row["lines"]]}

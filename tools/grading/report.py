@@ -96,14 +96,14 @@ class Results:
                 if (lab["name"], e["id"]) not in graded:
                     self.add(lab, e, False, [("", message)], [], [])
 
-    def add(self, lab, e, ok, failures, images, notes, hidden_result=None, hidden=False):
+    def add(self, lab, e, ok, failures, images, notes, hidden_result=None, hidden=False, explained=None):
         hidden_points = lab["hidden_points"].get(e["id"], 0) if hidden else 0
         visible_points = e["points"] - hidden_points
         bonus = " (extension: bonus points)" if e.get("extension") else ""
         entry = {"lab": lab["name"], "id": e["id"], "title": e["title"] + bonus, "points": visible_points,
                  "score": visible_points if ok else 0, "ok": ok, "failures": failures, "images": images,
                  "notes": notes, "visibility": "visible", "extension": bool(e.get("extension")),
-                 "status": "done" if ok else status_of(failures)}
+                 "status": "done" if ok else status_of(failures), "explained": explained}
         self.entries.append(entry)
         if hidden:
             h_ok, h_failures = (hidden_result[0], hidden_result[1]) if hidden_result else (False, failures)
@@ -122,6 +122,10 @@ class Results:
         then the pictures of its failing visible tests (a scene's three panels, a sweep's plot) inside
         it as data URIs, while `budget` (bytes, a one-item list shared by the whole results.json) lasts."""
         lines = [f"**{x['status']}**"] + [f"- {n}" for n in x["notes"]]
+        explained = x.get("explained")
+        if not x["ok"] and explained and explained["lines"]:  # check's own words for it (one definition)
+            lines.append("\nWhat `./workbook check` says of it:\n```\n" + "\n".join(explained["lines"])[:4000] + "\n```")
+            lines.append("\nThe failing tests:")
         for test, msg in x["failures"][:5]:
             lines.append(f"\n`{test}`\n```\n{msg.strip()[:2000]}\n```" if test else f"\n```\n{msg.strip()[:2000]}\n```")
         text = student_visible("\n".join(lines))
