@@ -49,35 +49,36 @@ EmbeddedLab::EmbeddedLab(const std::string& lab, MainFunction mainOf, const std:
 
 EmbeddedLab::~EmbeddedLab() {
   Use use(*this);  // (its programs and maps go while the host's context lives)
-  lab_.reset();
+  lab_.reset(), stage_.reset();
 }
 
-void EmbeddedLab::render(Lab& host, float dt) {
+void EmbeddedLab::render(const Lab& host, float dt) {
   Use use(*this);
   Lab& l = *lab_;
-  if (!initialised_) {
+  if (!stage_) {
     l.adoptScene(host.scene, false);
-    l.target_ = host.target_, l.timers_ = host.timers_;
-    l.gpuScene = std::make_unique<GpuScene>(l.scene);
-    initialised_ = true;
-    l.init();
-    l.board_.probe();  // (some labs draw from the exercises' states)
+    stage_ = std::make_unique<LabStage>(host.stage().target, host.stage().timers);  // (its exercises: this lab's)
+    l.start(*stage_);  // (some labs draw from the exercises' states: start() probes them)
   }
   if (++frames_ % 15 == 0)
-    for (auto& p : l.programs_) p.reloadIfChanged();  // a lecturer may edit a solution's shader live
-  for (const auto& p : l.programs_)
+    for (auto& p : stage_->programs) p.reloadIfChanged();  // a lecturer may edit a solution's shader live
+  for (const auto& p : stage_->programs)
     if (!p.ok()) throw Error(p.error());
   l.camera = host.camera;
   l.update(dt);
   l.render();
-  host.light_ = l.light_, host.lightShown_ = l.lightShown_, host.debug_ = l.debug_;
-  host.alphaCutoff_ = l.alphaCutoff_, host.lightSamples_ = l.lightSamples_;
-  for (; warningsSeen_ < l.warnings_.size(); ++warningsSeen_) host.warn(labName_ + ": " + l.warnings_[warningsSeen_]);
 }
 
 void EmbeddedLab::ui() {
   Use use(*this);
-  if (initialised_) lab_->ui();
+  if (stage_) lab_->ui();
+}
+
+std::vector<std::string> EmbeddedLab::takeWarnings() {
+  std::vector<std::string> fresh;
+  for (; stage_ && warningsSeen_ < stage_->warnings.size(); ++warningsSeen_)
+    fresh.push_back(labName_ + ": " + stage_->warnings[warningsSeen_]);
+  return fresh;
 }
 
 }  // namespace wb

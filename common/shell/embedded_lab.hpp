@@ -2,9 +2,12 @@
 /// A lab hosted inside another lab. The showcase links every lab's solution into one program (each
 /// lab's main.cpp compiled with main renamed, see wb::g_hostedLab) and draws the chosen technique
 /// into its own frame target, through its own camera, on its own scene. Nothing of a lab is copied:
-/// a EmbeddedLab calls the lab's own init(), render() and ui().
+/// an EmbeddedLab calls the lab's own init(), render() and ui(), and is its host: it keeps the lab's
+/// stage (its programs, exercises and warnings) and lends it the frame target of the lab it is
+/// drawn in.
 #pragma once
 #include "common/shell/lab.hpp"
+#include "common/shell/lab_stage.hpp"
 
 #include <memory>
 #include <string>
@@ -27,23 +30,22 @@ class EmbeddedLab {
   /// The hosted lab (its settings, its board).
   Lab& lab() { return *lab_; }
   /// Draws one frame of the lab into `host`'s frame target, as `host`'s camera sees `host`'s scene
-  /// (the first call copies the scene and runs init()). Afterwards the host carries the lab's light,
-  /// debug options, alpha cutoff and light samples, so the app's debug views and measurements
-  /// describe what was drawn. Throws what init() or render() throw, and wb::Error for a shader that
-  /// does not compile.
-  void render(Lab& host, float dt);
+  /// (the first call copies the scene and starts the lab). The lab's shown() then describes what was
+  /// drawn, for a host that passes it on to the app's debug views and measurements. Throws what
+  /// init() or render() throw, and wb::Error for a shader that does not compile.
+  void render(const Lab& host, float dt);
   /// The lab's own widgets.
   void ui();
-  /// Gives the host this lab's warnings again at the next render (a host that cleared its own).
+  /// The lab's warnings not taken yet, each named with the lab ("03_pcf: ..."), for the host to show.
+  std::vector<std::string> takeWarnings();
+  /// Gives the host this lab's warnings again at the next takeWarnings() (a host that cleared its own).
   void resendWarnings() { warningsSeen_ = 0; }
-  /// The settings a host shows for this lab: all but camera.bookmark (the host's camera is shared).
-  static bool shown(const Setting& s) { return s.name != "camera.bookmark"; }
 
  private:
   class Use;  // points wb::variant at this lab while it lives
   std::string labName_, shaderPath_, labDir_, solutionDir_;
+  std::unique_ptr<LabStage> stage_;  // from the first render() (the lab's stage: it outlives the lab)
   std::unique_ptr<Lab> lab_;
-  bool initialised_ = false;
   int frames_ = 0;
   size_t warningsSeen_ = 0;
 };

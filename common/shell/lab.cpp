@@ -1,24 +1,21 @@
 #include "common/shell/lab.hpp"
 
-#include "common/base/variant.hpp"
 #include "common/exercise/exercise_source_rules.hpp"
+#include "common/shell/lab_stage.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
-
-namespace fs = std::filesystem;
 
 namespace wb {
 namespace {
 const int kMapSizes[] = {512, 1024, 2048, 4096, 8192};
 }  // namespace
 
-Lab::Lab(std::string defaultScene, ShadowKind kind)
-    : defaultScene_(std::move(defaultScene)), board_(fs::path(variant::kLabDir) / "exercises.json") {
-  // The settings every lab shares; a lab registers the rest (and shadow.bias, if it uses one).
+Lab::Lab(std::string defaultScene, ShadowKind kind) : defaultScene_(std::move(defaultScene)) {
+  // The settings every lab shares; a lab registers the rest (and shadow.bias, if it uses one). The
+  // host adds its own (camera.bookmark, light.orbit, camera.dolly, render.scale, ui.*, present.*).
   if (kind == ShadowKind::Map) {
     std::vector<std::string> sizes;
     for (int s : kMapSizes) sizes.push_back(std::to_string(s));
@@ -28,24 +25,6 @@ Lab::Lab(std::string defaultScene, ShadowKind kind)
   settings.add("alpha.cutoff", alphaCutoff_, 0.0f, 1.0f, "leaf texels with lower alpha are holes and cast no shadow");
   settings.add("light.index", lightIndex, 0, 7, "which light of the scene casts shadows");
   if (kind == ShadowKind::Map) debug_.addTo(settings);
-  settings.add("camera.bookmark", bookmark_, 1, 9, "camera bookmark of the scene file, 1 = the first (keys 1-9)");
-  settings.add("light.orbit", lightOrbit_, -180.0f, 180.0f,
-               "degrees the scene's lights turn about the vertical axis through the origin (a clip: --animate "
-               "light.orbit=0:90)");
-  settings.add("camera.dolly", cameraDolly_, -20.0f, 20.0f,
-               "units the camera stands further back from its bookmark's target (negative: closer; a clip: "
-               "--animate camera.dolly=4:0)");
-  settings.add("render.scale", renderScale_, 0.25f, 1.0f,
-               "in a window, draw the scene at this fraction of the window's resolution and stretch it (the "
-               "panels and captions stay sharp): 0.5 at 1920x1080 costs about what 960x540 does");
-  settings.add("ui.scale", uiScale_, 0.0f, 4.0f,
-               "the panels' text size: 1 = 16 px, 2 = 32 px; 0 = follow the monitor (and 1.25x while presenting)");
-  settings.add("ui.panels", uiPanels_, "in a window, the panels (H toggles them; off: the scene alone, for a lecture)");
-  // For lectures (demo.json turns them on); the visibility buffer that tests read never changes.
-  settings.add("present.srgb", present_.srgb, "write sRGB-encoded colour (the shading is linear)");
-  settings.add("present.grid", present_.grid, "a faint one-unit grid on the ground, to read texel sizes off");
-  settings.addChoice("present.msaa", present_.msaa, {"off", "4"},
-                     "multisampling of the camera pass (an edge pixel's visibility becomes its samples' mean)");
 }
 
 Lab::~Lab() = default;
@@ -69,23 +48,64 @@ void Lab::adoptScene(Scene s, bool keepLightSize) {
     throw UsageError("light.index=" + std::to_string(lightIndex) + " but " + s.path.string() + " has " +
                      std::to_string(s.lights.size()) + " light(s)");
   scene = std::move(s);
-  baseLights_.clear(), appliedOrbit_ = 0, appliedDolly_ = 0;  // (a new scene's lights are its own)
   const float size = scene.lights[size_t(lightIndex)].size;
   if (lightSizeUsed_ && size > 0 && !keepLightSize) lightSize_ = size;
+}
+
+void Lab::start(LabStage& stage) {
+  stage_ = &stage;
+  gpuScene = std::make_unique<GpuScene>(scene);
+  init();
+  stage.board.probe();
+}
+
+LabStage& Lab::stage() const {
+  if (!stage_) throw Error("a lab's helpers work once a host has started it (LabHost::host, EmbeddedLab::render)");
+  return *stage_;
+}
+
+FrameShown Lab::shown() const {
+  FrameShown f;
+  f.light = light_;
+  if (lightShown_)
+    f.litBy = light_.light;
+  else if (lightIndex >= 0 && lightIndex < int(scene.lights.size()))
+    f.litBy = scene.lights[size_t(lightIndex)];
+  f.debug = debug_;
+  f.viewProj = viewProj();
+  f.alphaCutoff = alphaCutoff_;
+  f.lightRays = 16 << (2 * lightSamples_);
+  return f;
+}
+
+const CompareChoice& Lab::comparison() const { return stage().comparison; }
+const ExerciseBoard& Lab::board() const { return stage().board; }
+void Lab::bindFrameTarget() const { stage().target.bind(); }
+glm::ivec2 Lab::frameSize() const { return stage().target.size(); }
+Lab::PassTimer Lab::timePass(const char* name) { return stage().timers.scope(name); }
+
+void Lab::glslExercise(const std::string& id, const std::string& file, const std::string& probe) {
+  stage().board.addProbe(id, file, probe);
+}
+
+void Lab::setStatus(const std::string& id, ExerciseState state, const std::string& message) {
+  stage().board.set(id, state, message);
 }
 
 Program& Lab::loadProgram(std::vector<ShaderStage> stages, std::string defines) {
   // The exercise floor's rules: a student's file includes only what its stub does, and a broken edit
   // draws the exercises that still compile.
-  programs_.push_back(Program::tryLoad(std::move(stages), std::move(defines), &exerciseSourceRules()));
-  return programs_.back();
+  auto& programs = stage().programs;
+  programs.push_back(Program::tryLoad(std::move(stages), std::move(defines), &exerciseSourceRules()));
+  return programs.back();
 }
 
 bool Lab::runExercise(const std::string& id, const std::function<nlohmann::json()>& call,
                       const std::function<void(const nlohmann::json&)>& replay) {
+  ExerciseTape& tape = stage().tape;
   ExerciseTape::Call c;
-  if (exerciseTape_.replays(id)) {  // the grader's trusted app, drawing with a student's results
-    c = exerciseTape_.next(id);
+  if (tape.replays(id)) {  // the grader's trusted app, drawing with a student's results
+    c = tape.next(id);
     try {
       if (c.state == ExerciseState::Implemented) replay(c.value);
     } catch (const std::exception& e) {
@@ -100,29 +120,21 @@ bool Lab::runExercise(const std::string& id, const std::function<nlohmann::json(
     } catch (const std::exception& e) {
       c.state = ExerciseState::Failed, c.message = e.what();
     }
-    if (exerciseTape_.recording()) exerciseTape_.add(id, c);
+    if (tape.recording()) tape.add(id, c);
   }
   setStatus(id, c.state, c.message);
   return c.state == ExerciseState::Implemented;
 }
 
 void Lab::warn(const std::string& message) {
-  if (std::find(warnings_.begin(), warnings_.end(), message) != warnings_.end()) return;
-  warnings_.push_back(message);
-  std::fprintf(stderr, "warning: %s\n", message.c_str());
+  if (stage_)
+    stage_->warn(message);
+  else  // (not started: nowhere to show it)
+    std::fprintf(stderr, "warning: %s\n", message.c_str());
 }
 
-void Lab::applyMotion() {
-  if (lightOrbit_ != appliedOrbit_) {
-    if (baseLights_.empty()) baseLights_ = scene.lights;
-    for (size_t k = 0; k < scene.lights.size() && k < baseLights_.size(); ++k)
-      scene.lights[k] = turnedAboutY(baseLights_[k], lightOrbit_);
-    appliedOrbit_ = lightOrbit_;
-  }
-  if (cameraDolly_ != appliedDolly_ && bookmark_ >= 1 && bookmark_ <= int(scene.cameras.size())) {
-    camera.pose.distance = std::max(0.05f, scene.cameras[size_t(bookmark_ - 1)].distance + cameraDolly_);
-    appliedDolly_ = cameraDolly_;
-  }
+void Lab::clearWarnings() {
+  if (stage_) stage_->warnings.clear();
 }
 
 int Lab::shadowMapSize() {

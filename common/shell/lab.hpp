@@ -31,12 +31,22 @@
 
 namespace wb {
 
-class LabHost;
+struct LabStage;
 
 /// How a lab makes its shadows, so that it gets only the shared settings that mean something there.
 enum class ShadowKind {
   Map,      ///< from a shadow map: shadow.map_size and the map's debug views (debug.*)
   Geometry  ///< from geometry (stencil shadow volumes): no map, so neither of those
+};
+
+/// What a lab's last frame showed, for its host's debug views and measurements.
+struct FrameShown {
+  LightView light;           ///< the light and map the lab showed (showLight()); no map where it showed none
+  Light litBy;               ///< the light to measure with: that light, else the scene's light.index
+  DebugOptions debug;        ///< debug.*
+  glm::mat4 viewProj{1};     ///< what the scene was seen through (viewProj())
+  float alphaCutoff = 0.5f;  ///< alpha.cutoff
+  int lightRays = 16;        ///< rays per pixel of the area-light reference (truth.light_samples)
 };
 
 /// Base class of every lab. Override the hooks; use the protected helpers.
@@ -50,14 +60,8 @@ class Lab {
   Lab(const Lab&) = delete;
   Lab& operator=(const Lab&) = delete;
 
-  /// The lab's exercises and their states.
-  const ExerciseBoard& board() const { return board_; }
-  /// This lab's tunables: the same values the UI edits, --set assigns and --list-settings prints.
-  Settings& tunables() { return settings; }
-  /// The scene file used when none is named.
-  const std::string& defaultScene() const { return defaultScene_; }
+  // The hooks: a lab overrides them, its host calls them.
 
- protected:
   /// Creates GL resources; called once after the context and scene exist. Read it as a table of contents.
   virtual void init() = 0;
   /// Advances animation by `dt` seconds (fixed 1/60 s in headless runs, so captures repeat).
@@ -70,17 +74,41 @@ class Lab {
   /// Called after the frame was measured against exact visibility (the Measure button, --metrics,
   /// a presenter step), with the measured numbers on one line; `split` when the frame was split.
   virtual void measured(const std::string& /*numbers*/, bool /*split*/) {}
+  /// What the last frame showed, for the host's debug views and measurements. A lab that draws
+  /// another lab's frame (the showcase) returns that lab's.
+  virtual FrameShown shown() const;
+
+  // What a host calls (LabHost; EmbeddedLab for a lab inside another). A lab author can skip these.
+
+  /// The scene file used when none is named.
+  const std::string& defaultScene() const { return defaultScene_; }
+  /// Takes `scene` as the lab's: light.index must name one of its lights (else wb::UsageError), and
+  /// that light's size becomes light.size unless `keepLightSize` (the command line names it).
+  void adoptScene(Scene scene, bool keepLightSize);
+  /// Starts the lab on a host's `stage`, which outlives it: puts the scene on the GPU, calls init()
+  /// and probes the GLSL exercises. Once, after adoptScene().
+  void start(LabStage& stage);
+  /// The stage the lab was started on; throws wb::Error before start().
+  LabStage& stage() const;
+
+  Settings settings;                   ///< this lab's tunables (register them in the constructor)
+  Scene scene;                         ///< the loaded scene file
+  std::unique_ptr<GpuScene> gpuScene;  ///< the scene on the GPU
+  OrbitCamera camera;                  ///< the viewer's camera (the host moves it: mouse, bookmarks)
+  int lightIndex = 0;                  ///< which scene light casts shadows (setting light.index)
+
+ protected:
   /// The split screen of this frame (on, the setting compared and its two values).
-  const CompareChoice& comparison() const { return comparison_; }
+  const CompareChoice& comparison() const;
+  /// The lab's exercises and their states (as the info panel shows them).
+  const ExerciseBoard& board() const;
 
   /// Builds a program that is hot-reloaded with the others; a broken edit keeps the last good one.
   Program& loadProgram(std::vector<ShaderStage> stages, std::string defines = {});
   /// Registers a GLSL exercise and the expression that probes whether it is implemented; the
   /// expression is evaluated in a vertex shader with `file` included and compared with WB_TODO; it
   /// may read wb_tex0 (a 2D texture) and wb_tex1 (a cube map).
-  void glslExercise(const std::string& id, const std::string& file, const std::string& probe) {
-    board_.addProbe(id, file, probe);
-  }
+  void glslExercise(const std::string& id, const std::string& file, const std::string& probe);
   /// Runs a C++ exercise call, recording Implemented / NotImplemented / Failed; true on success.
   template <class F>
   bool attempt(const std::string& id, F&& call) {
@@ -102,9 +130,7 @@ class Lab {
         id, [&] { return call(), captureRasterState(); }, applyRasterState);
   }
   /// Records an exercise's state (shown in the info panel, printed and recorded by headless runs).
-  void setStatus(const std::string& id, ExerciseState state, const std::string& message) {
-    board_.set(id, state, message);
-  }
+  void setStatus(const std::string& id, ExerciseState state, const std::string& message);
 
   /// PASS 1 of most labs: draws the scene's depth into `map` as seen through `lightViewProj` with
   /// `depthProgram` (setting u_lightViewProj and u_alphaCutoff), and shows `light` in the debug views.
@@ -130,9 +156,9 @@ class Lab {
   /// wbToLight() and wbLightReach() (shaders/wb/lighting.glsl), so every technique is lit alike.
   void beginCameraPass(const Program& program, const Light& light, const glm::mat4& lightViewProj, GLuint shadowMap);
   /// Binds the offscreen frame target (colour, visibility, position, depth + stencil) and its viewport.
-  void bindFrameTarget() const { target_->bind(); }
+  void bindFrameTarget() const;
   /// The frame target's size in pixels.
-  glm::ivec2 frameSize() const { return target_->size(); }
+  glm::ivec2 frameSize() const;
   /// The view-projection the scene is seen through: the camera, or the light in "view from light".
   glm::mat4 viewProj() const;
   /// The eye position matching viewProj().
@@ -162,34 +188,19 @@ class Lab {
   /// A warning shown in the info panel (and printed once on stderr).
   void warn(const std::string& message);
   /// Forgets the warnings shown (a host that switches the lab it shows: the showcase).
-  void clearWarnings() { warnings_.clear(); }
+  void clearWarnings();
 
   /// Times a pass's GPU work until it is destroyed.
   using PassTimer = GpuTimers::Scope;
   /// Starts timing a pass: `auto t = timePass("shadow");`.
-  PassTimer timePass(const char* name) { return timers_->scope(name); }
-
-  Settings settings;                   ///< this lab's tunables (register them in the constructor)
-  Scene scene;                         ///< the loaded scene file
-  std::unique_ptr<GpuScene> gpuScene;  ///< the scene on the GPU
-  OrbitCamera camera;                  ///< the viewer's camera
-  int lightIndex = 0;                  ///< which scene light casts shadows (setting light.index)
+  PassTimer timePass(const char* name);
 
  private:
-  friend class LabHost;      // the host: it loads the scene, calls the hooks and reads the shared state
-  friend class EmbeddedLab;  // a lab inside another lab (the showcase)
-  // Takes `scene` as the lab's: light.index must name one of its lights (else wb::UsageError), and
-  // that light's size becomes light.size unless `keepLightSize` (the command line names it).
-  void adoptScene(Scene scene, bool keepLightSize);
-  void applyMotion();  // light.orbit and camera.dolly, where they changed (the host, every frame)
   bool runExercise(const std::string& id, const std::function<nlohmann::json()>& call,
                    const std::function<void(const nlohmann::json&)>& replay);
   std::string defaultScene_;
-  ExerciseBoard board_;
-  ExerciseTape exerciseTape_;      // --record-exercises / --replay-exercises
-  FrameTarget* target_ = nullptr;  // the host's, while hosted
-  GpuTimers* timers_ = nullptr;
-  LightView light_;
+  LabStage* stage_ = nullptr;  // the host's, from start()
+  LightView light_;            // what showLight() was given
   bool lightShown_ = false;
   DebugOptions debug_;
   int mapSizeChoice_ = 1;  // index into 512..8192
@@ -199,38 +210,21 @@ class Lab {
   bool lightSizeUsed_ = false;  // useLightSize() was called: a scene's light size sets light.size
   int lightSamples_ = 1;        // index into 16, 64, 256
   float alphaCutoff_ = 0.5f;
-  int bookmark_ = 1;          // counted from 1, as the keys are
-  CompareChoice comparison_;  // the app's split screen, set every frame
-  float uiScale_ = 0;         // ui.scale: the panels' text size over 16 px (0: follow the monitor)
-  bool uiPanels_ = true;      // ui.panels: the panels shown (H toggles it)
-  float renderScale_ = 1;     // render.scale: the scene's resolution over the window's (in a window)
-  // Motion for clips (--animate): the lights turned about the vertical axis, the camera moved back.
-  float lightOrbit_ = 0, cameraDolly_ = 0, appliedOrbit_ = 0, appliedDolly_ = 0;
-  std::vector<Light> baseLights_;  // the scene's lights before light.orbit
-  struct {
-    bool srgb = false;  // present.srgb: encode the colour for the screen (the visibility is untouched)
-    bool grid = false;  // present.grid: a faint world-unit grid on the ground
-    int msaa = 0;       // present.msaa: 0 off, 1 four samples per pixel in the camera pass
-  } present_;
-  std::list<Program> programs_;
-  std::vector<std::string> warnings_;
 };
 
-/// Constructs lab T and runs it with the shared command line in a LabHost: `int main(int c, char** v)
-/// { return wb::run<DepthMapLab>(c, v); }`.
-template <class T>
-int run(int argc, char** argv);
+/// Runs `lab` with the shared command line in a LabHost (lab_host.hpp) and returns the exit code.
+int runLab(int argc, char** argv, std::unique_ptr<Lab> lab);
 
 /// Set by a program that hosts labs (the showcase, which compiles each lab's main.cpp with main
 /// renamed): while it is set, run<T>() puts a new T here instead of running it.
 extern std::unique_ptr<Lab>* g_hostedLab;
 
-}  // namespace wb
-
-#include "common/shell/lab_host.hpp"
-
+/// Constructs lab T and runs it with the shared command line in a LabHost: `int main(int c, char** v)
+/// { return wb::run<DepthMapLab>(c, v); }`.
 template <class T>
-int wb::run(int argc, char** argv) {
+int run(int argc, char** argv) {
   if (g_hostedLab) return *g_hostedLab = std::make_unique<T>(), 0;
-  return LabHost::runLab(argc, argv, std::make_unique<T>());
+  return runLab(argc, argv, std::make_unique<T>());
 }
+
+}  // namespace wb

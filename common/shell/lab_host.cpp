@@ -33,10 +33,12 @@ void LabHost::applyUiScale() {
   // the monitor's content scale (2 there too) must not enlarge the panels a second time.
   const float automatic =
       ctx_->contentScale() / pixelsPerPoint() * std::max(1.0f, rows / 1080.0f) * (step_ > 0 ? 1.25f : 1.0f);
-  imgui_->setScale(lab_->uiScale_ > 0 ? lab_->uiScale_ : automatic);
+  imgui_->setScale(shared_.uiScale > 0 ? shared_.uiScale : automatic);
 }
 
-void LabHost::configureSettings(Lab& lab, const Options& o) {
+void LabHost::configure(Lab& lab) {
+  shared_.addTo(lab.settings);
+  const Options& o = options_;
   for (const auto& s : o.sets) lab.settings.assign(s);
   if (o.compare.on) {  // both values must be valid before anything renders
     const std::string keep = lab.settings.value(o.compare.key);
@@ -48,23 +50,24 @@ void LabHost::configureSettings(Lab& lab, const Options& o) {
   for (const auto& s : o.sets) lab.settings.assign(s);
 }
 
-void LabHost::loadScene(Lab& lab, const Options& o) {
+void LabHost::loadScene(Lab& lab) {
+  const Options& o = options_;
   const fs::path path = o.scene.empty() ? fs::path(variant::kSourceDir) / lab.defaultScene() : fs::path(o.scene);
   Scene scene = Scene::load(path);
   if (o.vary >= 0) varyScene(scene, uint32_t(o.vary));
   lab.adoptScene(std::move(scene), o.names("light.size"));
-  if (lab.bookmark_ > int(lab.scene.cameras.size()))
-    throw UsageError("camera.bookmark=" + std::to_string(lab.bookmark_) + " but " + path.string() + " has " +
+  if (!shared_.goToBookmark(shared_.bookmark, lab.scene, lab.camera))
+    throw UsageError("camera.bookmark=" + std::to_string(shared_.bookmark) + " but " + path.string() + " has " +
                      std::to_string(lab.scene.cameras.size()) + " camera bookmark(s), 1 to " +
                      std::to_string(lab.scene.cameras.size()));
-  lab.camera.pose = lab.scene.cameras[size_t(lab.bookmark_ - 1)];
 }
 
 int LabHost::runLab(int argc, char** argv, std::unique_ptr<Lab> lab) {
   installCrashReport();  // a crash in an exercise names its file:line
   const std::string exe = fs::path(argv[0]).filename().string();
+  const ExerciseBoard exercises(LabStage::exercisesFile());  // the lab's number and title
   RunRecord record;
-  record.set("lab", lab->board().number());
+  record.set("lab", exercises.number());
   record.set("variant", variant::kName);
   Options options;
   for (int a = 1; a + 1 < argc; ++a)  // a record even when the rest of the command line is bad
@@ -82,20 +85,18 @@ int LabHost::runLab(int argc, char** argv, std::unique_ptr<Lab> lab) {
       std::printf("%s", usageText(exe, lab->defaultScene()).c_str());
       return 0;
     }
-    configureSettings(*lab, options);
+    if (options.headless && options.screenshot.empty() && options.visibility.empty() && options.bench.empty() &&
+        !options.metrics && options.record.empty() && options.sweeps.empty() && options.video.empty())
+      options.screenshot = "lab" + exercises.number() + ".png";  // a headless run asked for nothing: a picture
+    LabHost app(options);
+    app.configure(*lab);
     if (options.listSettings) {
-      std::printf("settings of %s:\n", lab->board().heading().c_str());
+      std::printf("settings of %s:\n", exercises.heading().c_str());
       lab->settings.list(std::cout);
       return 0;
     }
-    loadScene(*lab, options);
-    if (!options.recordExercises.empty()) lab->exerciseTape_.startRecording(options.recordExercises);
-    if (!options.replayExercises.empty()) lab->exerciseTape_.startReplay(options.replayExercises);
-    const std::string number = lab->board().number();
-    if (options.headless && options.screenshot.empty() && options.visibility.empty() && options.bench.empty() &&
-        !options.metrics && options.record.empty() && options.sweeps.empty() && options.video.empty())
-      options.screenshot = "lab" + number + ".png";  // a headless run asked for nothing: a picture
-    LabHost app(options, lab->board().heading());
+    app.loadScene(*lab);
+    app.open(exercises.heading());
     app.host(std::move(lab));
     if (!options.sweeps.empty()) {
       if (const int code = app.sweep(); code != 0) return code;
@@ -120,7 +121,7 @@ int LabHost::runLab(int argc, char** argv, std::unique_ptr<Lab> lab) {
   }
 }
 
-LabHost::LabHost(const Options& options, const std::string& title) : options_(options) {
+LabHost::LabHost(const Options& options) : options_(options) {
   if (options_.frames < 0 && !options_.video.empty()) options_.frames = 90;
   if (options_.frames < 0 && (options_.headless || !options_.bench.empty()))
     options_.frames = options_.bench.empty() ? 1 : 60;
@@ -131,6 +132,9 @@ LabHost::LabHost(const Options& options, const std::string& title) : options_(op
   strictGl_ = true;
 #endif
   if (const char* strict = std::getenv("WB_STRICT_GL")) strictGl_ = std::string(strict) != "0";
+}
+
+void LabHost::open(const std::string& title) {
   ctx_ = Context::create({options_.headless, frameSize_.x, frameSize_.y, title, true, options_.fullscreen});
   fullscreen_ = options_.fullscreen;
   if (!options_.bench.empty() && !options_.headless) glfwSwapInterval(0);  // measure, do not wait for vsync
@@ -144,7 +148,7 @@ LabHost::LabHost(const Options& options, const std::string& title) : options_(op
 LabHost::~LabHost() = default;
 
 void LabHost::host(std::unique_ptr<Lab> lab) {
-  lab_.reset();  // the previous lab's GL objects go while the context lives
+  lab_.reset(), stage_.reset();  // the previous lab's GL objects and programs go while the context lives
   measurement_ = Measurement();
   heatmap_.reset();
   lastMeasure_.reset();
@@ -156,21 +160,20 @@ void LabHost::host(std::unique_ptr<Lab> lab) {
   bool known = false;  // a comparison carries over only if the new lab has that setting
   for (const auto& s : lab->settings.all()) known = known || s.name == panels_.compare.key;
   if (!known) panels_.compare = CompareChoice{};
-  lab->target_ = &target_, lab->timers_ = &timers_;
   target_.resize(frameSize_);
-  lab->gpuScene = std::make_unique<GpuScene>(lab->scene);
+  stage_ = std::make_unique<LabStage>(target_, timers_);
+  if (!options_.recordExercises.empty()) stage_->tape.startRecording(options_.recordExercises);
+  if (!options_.replayExercises.empty()) stage_->tape.startReplay(options_.replayExercises);
+  motion_ = SceneMotion();  // (a new scene's lights are its own)
   lab_ = std::move(lab);
-  if (ctx_->window()) {
-    glfwSetWindowTitle(ctx_->window(), lab_->board().heading().c_str());
-  }
+  if (ctx_->window()) glfwSetWindowTitle(ctx_->window(), stage_->board.heading().c_str());
   startPresenter();
   applyPresentation();  // (before init(): its programs are built with present.*)
-  lab_->init();
-  lab_->board_.probe();
+  lab_->start(*stage_);
   // A window checks the exercises in the background (a headless run is what the checks start).
   checks_.reset();
   symptoms_.reset();
-  if (imgui_ && lab_->board().hasHunts()) symptoms_ = std::make_unique<SymptomWatch>();
+  if (imgui_ && stage_->board.hasHunts()) symptoms_ = std::make_unique<SymptomWatch>();
   loadPicture();
   // (the showcase has no exercises to check, and the bug gallery's build is a lecturer's demo)
   if (imgui_ && std::string(variant::kLab) != "00_showcase" && std::string(variant::kName) != "bugs") {
@@ -203,7 +206,7 @@ void LabHost::loop() {
     timers_.collect(ctx_->headless(), record);
     for (const auto& e : takeGlErrors()) {
       if (strictGl_) throw Error("OpenGL error: " + e);
-      lab_->warn("OpenGL error: " + e);
+      stage_->warn("OpenGL error: " + e);
     }
     if (options_.metrics && imgui_ && frameIndex_ == 0) measureNow(true);  // a window shows it as an overlay
     if (measureStep_ && imgui_) measureStep_ = false, stepNumbers_ = Presenter::numbersLine(measureNow(false));
@@ -215,47 +218,48 @@ void LabHost::frame(float dt) {
   if (imgui_) beginUiFrame();
   hotReload();
   applyPresentation();
-  lab_->comparison_ = panels_.compare;
-  lab_->applyMotion();
+  stage_->comparison = panels_.compare;
+  motion_.apply(shared_, lab_->scene, lab_->camera);
   lab_->update(dt);
   target_.resize(frameSize_);
   drawLab();
   // Shared debug views, drawn into the frame target so screenshots and headless runs show them.
-  debug_->draw(lab_->debug_, lab_->light_, lab_->viewProj(), target_, panels_.showHeatmap ? heatmap_.id() : 0);
+  const FrameShown shown = lab_->shown();
+  debug_->draw(shown.debug, shown.light, shown.viewProj, target_, panels_.showHeatmap ? heatmap_.id() : 0);
   if (imgui_) presentWindow();
 }
 
 void LabHost::hotReload() {
   // A changed file rebuilds its programs; a failed build keeps the last good program.
   if (frameIndex_ % 15 != 0) return;
-  for (auto& p : lab_->programs_) reloads_ += p.reloadIfChanged() ? 1 : 0;
+  for (auto& p : stage_->programs) reloads_ += p.reloadIfChanged() ? 1 : 0;
   if (checks_) checks_->pollEdits();
-  if (lab_->board_.probedFilesChanged()) {
-    lab_->board_.probe();
+  if (stage_->board.probedFilesChanged()) {
+    stage_->board.probe();
     if (checks_) checks_->start();
   }
 }
 
 void LabHost::drawLab() {
   Lab& lab = *lab_;
-  const bool programsOk =
-      std::all_of(lab.programs_.begin(), lab.programs_.end(), [](const Program& p) { return p.ok(); });
+  const std::list<Program>& programs = stage_->programs;
+  const bool programsOk = std::all_of(programs.begin(), programs.end(), [](const Program& p) { return p.ok(); });
   if (!programsOk && ctx_->headless())
-    for (const auto& p : lab.programs_)
+    for (const auto& p : programs)
       if (!p.ok()) throw Error(p.error());
   // The scene: once, or in split-screen comparison twice (left half with value A, right with B).
   split_.render(
       target_, lab.settings, panels_.compare,
       [&] {
-        target_.setSamples(lab.present_.msaa ? 4 : 1);
+        target_.setSamples(shared_.present.msaa ? 4 : 1);
         target_.clear();
         glEnable(GL_DEPTH_TEST);
         if (programsOk) lab.render();
         target_.resolve();
       },
-      [&](int side) { sides_[side] = lab.light_; }, stretched() ? 0.0f : pixelsPerPoint());
+      [&](int side) { sides_[side] = lab.shown().light; }, stretched() ? 0.0f : pixelsPerPoint());
   if (!programsOk) {  // a window whose shaders never compiled says so on the frame, not just sky
-    const auto bad = std::find_if(lab.programs_.begin(), lab.programs_.end(), [](const Program& p) { return !p.ok(); });
+    const auto bad = std::find_if(programs.begin(), programs.end(), [](const Program& p) { return !p.ok(); });
     const std::string where = firstErrorLine(bad->error());
     target_.bind();
     const glm::ivec2 size = target_.size();
@@ -267,24 +271,22 @@ void LabHost::drawLab() {
 }
 
 MeasureResult LabHost::measureFrame() {
-  Lab& lab = *lab_;
-  const Light& sceneLight = lab.lightShown_ ? lab.light_.light : lab.scene.lights[size_t(lab.lightIndex)];
+  const FrameShown shown = lab_->shown();
   const CompareChoice& c = panels_.compare;
   const bool split = c.on && !c.key.empty();
   std::vector<std::string> halves;
   if (split) halves = {c.key + "=" + c.a, c.key + "=" + c.b};
   const MeasureResult r = measurement_.measure(
-      {target_, lab.scene, lab.alphaCutoff_, lab.light_, sceneLight, halves, sides_, 16 << (2 * lab.lightSamples_)});
+      {target_, lab_->scene, shown.alphaCutoff, shown.light, shown.litBy, halves, sides_, shown.lightRays});
   if (symptoms_) symptoms_->record(r);
   return r;
 }
 
 MeasureResult LabHost::measureNow(bool report) {
-  Lab& lab = *lab_;
   const MeasureResult r = measureFrame();
   panels_.measured = r.text;
   lastMeasure_ = r;
-  lab.measured(Presenter::numbersLine(r), panels_.compare.on && !panels_.compare.key.empty());
+  lab_->measured(Presenter::numbersLine(r), panels_.compare.on && !panels_.compare.key.empty());
   if (!report) return r;
   const glm::ivec2 size = target_.size();
   if (imgui_) {
@@ -312,7 +314,7 @@ int LabHost::sweep() {
 }
 
 void LabHost::finish(RunRecord& record) {
-  lab_->exerciseTape_.save();
+  stage_->tape.save();
   if (options_.metrics && !imgui_) measureNow(true);
   const glm::ivec2 size = target_.size();
   if (!options_.screenshot.empty() && !imgui_) {  // (a window writes its own, with the UI)
@@ -326,18 +328,18 @@ void LabHost::finish(RunRecord& record) {
     say("wrote " + fs::absolute(options_.visibility).string());
   }
   if (!options_.bench.empty()) {
-    writeBench(options_.bench, lab_->board().number(), size, timers_, wall_, !options_.quiet);
+    writeBench(options_.bench, stage_->board.number(), size, timers_, wall_, !options_.quiet);
     written_.emplace_back("bench", options_.bench);
   }
-  lab_->board().printUnfinished();
-  record.set("title", lab_->board().title());
+  stage_->board.printUnfinished();
+  record.set("title", stage_->board.title());
   record.set("renderer", Context::renderer());
   record.set("gl_version", Context::version());
   record.set("size", {size.x, size.y});
   record.set("frames", frameIndex_);
-  record.set("exercises", lab_->board().toJson());
+  record.set("exercises", stage_->board.toJson());
   record.set("measurement", lastMeasure_ ? lastMeasure_->toJson() : nlohmann::json());
-  record.set("warnings", lab_->warnings_);
+  record.set("warnings", stage_->warnings);
   if (imgui_)  // (the panels' text height in the framebuffer's pixels: 16 per unit of scale, per point)
     record.set("panel_text_pixels", 16.0f * imgui_->scale() * pixelsPerPoint());
   if (step_ > 0) {
@@ -356,10 +358,9 @@ void LabHost::showStep(int k) {
   if (k == 0 || !presenter_) return;
   const DemoStep& s = presenter_->apply(k, lab.settings);
   const std::string where = "demo step " + std::to_string(k) + " (\"" + s.title + "\"): ";
-  if (s.bookmark > int(lab.scene.cameras.size()))
+  if (s.bookmark > 0 && !shared_.goToBookmark(s.bookmark, lab.scene, lab.camera))
     throw UsageError(where + "bookmark " + std::to_string(s.bookmark) + " but the scene has " +
                      std::to_string(lab.scene.cameras.size()));
-  if (s.bookmark > 0) lab.bookmark_ = s.bookmark, lab.camera.pose = lab.scene.cameras[size_t(s.bookmark - 1)];
   if (s.compare.on) {  // both values must exist before a frame is split
     const std::string keep = lab.settings.value(s.compare.key);
     for (const auto& v : {s.compare.a, s.compare.b}) lab.settings.assign(s.compare.key + "=" + v);
@@ -373,10 +374,10 @@ void LabHost::showStep(int k) {
 
 // present.* are compiled into every program (shaders/wb/outputs.glsl): a change rebuilds them now.
 void LabHost::applyPresentation() {
-  const std::string defines = std::string(lab_->present_.srgb ? "#define WB_PRESENT_SRGB\n" : "") +
-                              (lab_->present_.grid ? "#define WB_PRESENT_GRID\n" : "");
+  const std::string defines = std::string(shared_.present.srgb ? "#define WB_PRESENT_SRGB\n" : "") +
+                              (shared_.present.grid ? "#define WB_PRESENT_GRID\n" : "");
   if (setSharedShaderDefines(defines))
-    for (auto& p : lab_->programs_) p.reloadIfChanged();
+    for (auto& p : stage_->programs) p.reloadIfChanged();
 }
 
 void LabHost::say(const std::string& text) const {
@@ -384,5 +385,7 @@ void LabHost::say(const std::string& text) const {
   std::printf("%s\n", text.c_str());
   std::fflush(stdout);  // (a window's log is read while it runs: a presenter's steps, a screenshot's path)
 }
+
+int runLab(int argc, char** argv, std::unique_ptr<Lab> lab) { return LabHost::runLab(argc, argv, std::move(lab)); }
 
 }  // namespace wb

@@ -12,6 +12,8 @@
 #include "common/shell/bench.hpp"
 #include "common/shell/command_line.hpp"
 #include "common/shell/debug_views.hpp"
+#include "common/shell/host_settings.hpp"
+#include "common/shell/lab_stage.hpp"
 #include "common/shell/panels.hpp"
 #include "common/shell/presenter.hpp"
 #include "common/shell/split_screen.hpp"
@@ -34,27 +36,33 @@ class Context;
 class Lab;
 class ImGuiLayer;
 
-/// Hosts labs in one context; see the file comment.
+/// Hosts labs in one context; see the file comment. The host's settings (host_settings.hpp) and
+/// what it lends and keeps for the lab it hosts (lab_stage.hpp) are its own; it reaches the lab
+/// through the lab's public side only.
 class LabHost {
  public:
   /// Runs `lab` with the shared command line: parses it, configures the lab, opens the context,
   /// hosts the lab and renders (or sweeps), then writes the outputs and the record. Returns the
   /// exit code: 0 done, 1 failed, 2 bad input, 3 no OpenGL 4.1 context.
   static int runLab(int argc, char** argv, std::unique_ptr<Lab> lab);
-  /// Applies the command line's --set, checks its --compare and --sweep values (CPU only, so bad
-  /// input fails before any window opens); throws wb::UsageError.
-  static void configureSettings(Lab& lab, const Options& options);
-  /// Loads the lab's scene (options.scene, or its default) and camera bookmark; throws wb::UsageError.
-  static void loadScene(Lab& lab, const Options& options);
 
-  /// Creates the context and the ImGui shell (in a window); throws wb::ContextError.
-  LabHost(const Options& options, const std::string& title);
+  /// Takes the run's options; nothing opens before open().
+  explicit LabHost(const Options& options);
   ~LabHost();
   LabHost(const LabHost&) = delete;
   LabHost& operator=(const LabHost&) = delete;
 
-  /// Hosts a configured lab with its scene loaded: the previous lab (if any) is destroyed first,
-  /// while the context still lives; then the lab's scene goes to the GPU and init() runs.
+  /// Adds the host's settings to the lab's (after its own), applies the command line's --set, and
+  /// checks its --compare and --sweep values (CPU only, so bad input fails before any window
+  /// opens); throws wb::UsageError. Once per lab, before loadScene().
+  void configure(Lab& lab);
+  /// Loads the lab's scene (options.scene, or its default) and goes to camera.bookmark; throws
+  /// wb::UsageError.
+  void loadScene(Lab& lab);
+  /// Creates the context and the ImGui shell (in a window); throws wb::ContextError.
+  void open(const std::string& title);
+  /// Hosts a lab with its scene loaded (loadScene()): the previous lab (if any) is destroyed first,
+  /// while the context still lives; then the lab starts on a new stage (its scene on the GPU, init()).
   void host(std::unique_ptr<Lab> lab);
   /// Renders frames until the window closes or options.frames have been drawn.
   void loop();
@@ -93,6 +101,8 @@ class LabHost {
   void say(const std::string& text) const;
 
   Options options_;
+  HostSettings shared_;           // camera.bookmark, light.orbit, camera.dolly, render.scale, ui.*, present.*
+  SceneMotion motion_;            // light.orbit and camera.dolly, applied to the hosted lab's scene
   std::unique_ptr<Context> ctx_;  // declared first: destroyed last, after every GL object below
   std::unique_ptr<ImGuiLayer> imgui_;
   FrameTarget target_;
@@ -108,6 +118,7 @@ class LabHost {
   std::unique_ptr<Presenter> presenter_;    // the lab's demo.json, if it has one
   std::unique_ptr<SymptomWatch> symptoms_;  // a window of a lab with bug hunts: their symptom, live
   int reloads_ = 0;                         // shader programs rebuilt so far (a hunt's edit)
+  std::unique_ptr<LabStage> stage_;         // what the hosted lab draws on and reports to
   std::unique_ptr<Lab> lab_;                // declared last: destroyed first
 
   PanelState panels_;

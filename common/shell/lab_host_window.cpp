@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 namespace wb {
 void LabHost::loadPicture() {
   picture_ = Texture(), pictureSize_ = glm::ivec2(0);
-  const fs::path file = lab_->board().picture();
+  const fs::path file = stage_->board.picture();
   std::error_code ec;
   if (!imgui_ || file.empty() || !fs::is_regular_file(file, ec)) return;
   int w = 0, h = 0, n = 0;
@@ -55,7 +55,7 @@ void LabHost::beginUiFrame() {
   if (step_ > 0) scene.y = window.y - Presenter::bandHeight(window, pixelsPerPoint());  // the caption's band
   viewSize_ = glm::max(scene, glm::ivec2(16));
   // render.scale: the scene is drawn smaller and stretched over the window; the panels stay sharp.
-  frameSize_ = glm::max(glm::ivec2(glm::round(glm::vec2(viewSize_) * lab_->renderScale_)), glm::ivec2(16));
+  frameSize_ = glm::max(glm::ivec2(glm::round(glm::vec2(viewSize_) * shared_.renderScale)), glm::ivec2(16));
 }
 
 void LabHost::handleKeys() {
@@ -65,12 +65,10 @@ void LabHost::handleKeys() {
     keyDown_[key] = down;
     return down && !was;
   };
-  Lab& lab = *lab_;
   for (int k = 0; k < 9; ++k)
-    if (pressed(GLFW_KEY_1 + k) && k < int(lab.scene.cameras.size()))
-      lab.bookmark_ = k + 1, lab.camera.pose = lab.scene.cameras[size_t(k)];
+    if (pressed(GLFW_KEY_1 + k)) shared_.goToBookmark(k + 1, lab_->scene, lab_->camera);  // (none: nothing)
   if (pressed(GLFW_KEY_F12) || pressed(GLFW_KEY_P)) screenshotRequested_ = true;
-  if (pressed(GLFW_KEY_H)) lab_->uiPanels_ = !lab_->uiPanels_;
+  if (pressed(GLFW_KEY_H)) shared_.uiPanels = !shared_.uiPanels;
   if (pressed(GLFW_KEY_F11)) fullscreen_ = !fullscreen_, ctx_->setFullscreen(fullscreen_, options_.size);
   stepKeys(pressed);
 }
@@ -89,7 +87,7 @@ void LabHost::startPresenter() {
     presenter_ = std::make_unique<Presenter>(demo, lab_->settings);
   } catch (const UsageError& e) {
     if (needed) throw;
-    lab_->warn(e.what());
+    stage_->warn(e.what());
     return;
   }
   if (options_.demoStep > 0) showStep(options_.demoStep);
@@ -107,7 +105,7 @@ void LabHost::stepKeys(const std::function<bool(int)>& pressed) {
   try {
     showStep(k);
   } catch (const UsageError& e) {
-    lab_->warn(e.what());
+    stage_->warn(e.what());
   }
 }
 
@@ -132,20 +130,19 @@ void LabHost::presentWindow() {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, window.x, window.y);
   Lab& lab = *lab_;
-  const int bookmark = lab.bookmark_;
+  const int bookmark = shared_.bookmark;
   auto labUi = [&] {  // the shared settings are applied before the lab's own widgets read them
-    if (lab.bookmark_ != bookmark && lab.bookmark_ <= int(lab.scene.cameras.size()))
-      lab.camera.pose = lab.scene.cameras[size_t(lab.bookmark_ - 1)];
+    if (shared_.bookmark != bookmark) shared_.goToBookmark(shared_.bookmark, lab.scene, lab.camera);
     lab.lightIndex = std::min(lab.lightIndex, int(lab.scene.lights.size()) - 1);
     lab.ui();
   };
-  panels_.hidePanels = !lab.uiPanels_;
+  panels_.hidePanels = !shared_.uiPanels;
   if (step_ == 0)  // presenting: the picture and its caption, no panels
-    drawPanels({lab.board_, checks_.get(), timers_, lab.programs_, lab.warnings_, lab.settings, shown, picture_.id(),
-                pictureSize_, labUi, symptoms_ ? &symptoms_->line() : nullptr},
+    drawPanels({stage_->board, checks_.get(), timers_, stage_->programs, stage_->warnings, lab.settings, shown,
+                picture_.id(), pictureSize_, labUi, symptoms_ ? &symptoms_->line() : nullptr},
                panels_);
   // The hunts' symptom, once the view has held still after a change (not while presenting).
-  const bool due = symptoms_ && step_ == 0 && symptoms_->due(lab.settings, lab.viewProj(), frameSize_, reloads_);
+  const bool due = symptoms_ && step_ == 0 && symptoms_->due(lab.settings, lab.shown().viewProj, frameSize_, reloads_);
   if (panels_.measureRequested)
     panels_.measureRequested = false, measureNow(true);
   else if (due)
@@ -164,7 +161,7 @@ void LabHost::presentWindow() {
     const std::time_t t = std::time(nullptr);
     std::strftime(stamp, sizeof stamp, "%Y%m%d_%H%M%S", std::localtime(&t));
     saveWindowScreenshot(lastFrame ? options_.screenshot
-                                   : "screenshots/lab" + lab.board().number() + "_" + stamp + ".png");
+                                   : "screenshots/lab" + stage_->board.number() + "_" + stamp + ".png");
   }
   ctx_->endFrame();
 }

@@ -83,7 +83,7 @@ class Showcase : public wb::Lab {
   // is not a frame of the technique's and is left out; a split screen's goes to both of its halves'
   // techniques, in a list of its own (a frame with both halves is not either one's frame).
   void update(float dt) override {
-    if (shown != technique) adopt();  // (the settings panel changed it)
+    if (adopted != technique) adopt();  // (the settings panel changed it)
     const bool skip = std::exchange(measuredLastFrame, false);
     const wb::CompareChoice& split = comparison();
     if (!skip && split.on && split.key == "showcase.technique") {
@@ -99,12 +99,16 @@ class Showcase : public wb::Lab {
   void render() override {
     wb::EmbeddedLab& h = *hosted[size_t(technique)];
     const Technique& t = kTechniques[size_t(technique)];
-    if (kernel > 0 && *t.kernelKey)
-      h.lab().tunables().assign(std::string(t.kernelKey) + "=" + kKernels[size_t(kernel)]);
-    if (mapSize > 0 && h.lab().tunables().has("shadow.map_size"))
-      h.lab().tunables().assign("shadow.map_size=" + kMapSizes[size_t(mapSize)]);
+    if (kernel > 0 && *t.kernelKey) h.lab().settings.assign(std::string(t.kernelKey) + "=" + kKernels[size_t(kernel)]);
+    if (mapSize > 0 && h.lab().settings.has("shadow.map_size"))
+      h.lab().settings.assign("shadow.map_size=" + kMapSizes[size_t(mapSize)]);
     h.render(*this, lastDt);
+    drawn = technique;
+    for (const auto& w : h.takeWarnings()) warn(w);
   }
+
+  // The app's debug views and measurements describe the technique drawn last.
+  wb::FrameShown shown() const override { return drawn < 0 ? Lab::shown() : hosted[size_t(drawn)]->lab().shown(); }
 
   // Each technique keeps its last measurement (Measure, whole frame), shown beside its frame time.
   void measured(const std::string& numbers, bool split) override {
@@ -146,22 +150,26 @@ class Showcase : public wb::Lab {
     ImGui::End();
   }
 
-  // The settings shown are the showcase's own and the chosen technique's (they write its lab's values).
+  // The settings shown are the showcase's own, the chosen technique's (they write its lab's values)
+  // and the app's (camera.bookmark, ui.*, present.*: the host adds them after the constructor).
   void adopt() {
     clearWarnings();  // the warnings shown are the technique's own (a cube map's stays with the cube map)
     hosted[size_t(technique)]->resendWarnings();
-    settings = own;
-    settings.include(hosted[size_t(technique)]->lab().tunables(), wb::EmbeddedLab::shown);
-    shown = technique;
+    wb::Settings next = own;
+    next.include(hosted[size_t(technique)]->lab().settings, [](const wb::Setting&) { return true; });
+    const wb::Settings* before = adopted < 0 ? nullptr : &hosted[size_t(adopted)]->lab().settings;
+    next.include(settings, [&](const wb::Setting& s) { return !before || !before->has(s.name); });  // the app's
+    settings = next;
+    adopted = technique;
   }
 
   std::vector<std::unique_ptr<wb::EmbeddedLab>> hosted;  // one per technique, in kTechniques' order
-  wb::Settings own;                                      // showcase.* and camera.bookmark
+  wb::Settings own;                                      // showcase.*
   std::vector<wb::RollingTimes> frameMs;                 // per technique, its whole frames
   std::vector<wb::RollingTimes> splitMs;                 // per technique, split-screen frames with it in a half
   bool measuredLastFrame = false;                        // that frame's time includes a measurement
   std::vector<std::string> lastMeasured;                 // per technique, its last whole-frame measurement
-  int technique = 2, shown = -1;                         // pcf
+  int technique = 2, adopted = -1, drawn = -1;           // pcf; the one whose settings are shown; drawn last
   int kernel = 2, mapSize = 2;                           // 3 taps, 1024 texels: seed 000's defaults
   float lastDt = 1.0f / 60;
 };
