@@ -45,8 +45,8 @@ std::string chunkAlone(const std::string& mine, const std::string& stub, const s
 
 /// What fillMissingChunks() did: the file, and the exercises whose stubs it put in.
 struct FilledChunks {
-  std::string text;
-  std::vector<std::string> added;
+  std::string text;                ///< the file, with the stubs of what it lacked
+  std::vector<std::string> added;  ///< the exercises whose stubs were put in, in the stub's order
 };
 
 /// `mine`, written against an earlier edition of the lab, with every exercise the stub has and `mine`
