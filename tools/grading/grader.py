@@ -16,11 +16,11 @@ from pathlib import Path
 
 from .chunks import BUILD_TIMED_OUT, DEFAULT_BUILD_TIMEOUT, build_failure, chunk, keep_only_chunks
 from .common import MAX_FILE_BYTES, ROOT, log
-from .outcomes import (CUT_SHORT, copy_images, grader_failed, hung_by_itself, left_as_stub,
-                       named_limit, runner_stopped, runs_app)
+from .outcomes import (CUT_SHORT, copy_images, explanation, grader_failed, gtest_failures, hung_by_itself,
+                       left_as_stub, named_limit, runner_stopped, runs_app)
 from .report import Results, first_line
 from .sandbox import minimal_env, run_killable, sweep_leftovers
-from .submission import find_student_file, student_files, unpack
+from .submission import fill_missing, find_student_file, student_files, unpack
 from .workspace import copy_tape, own
 
 
@@ -119,22 +119,6 @@ class Grader:
             return {e["id"]: build_failure(out) for e in lab["exercises"]}
         return failed
 
-    def fill_missing(self, lab, rel, content):
-        """A file written against an earlier edition of the lab: the exercises it lacks are taken from
-        the stub, so only those are lost (wb_check --fill-missing, as `check` does it: one
-        implementation, common/exercise/exercise_chunks.hpp). Returns (content, the lines that say so)."""
-        stub, tool = ROOT / "labs" / lab["name"] / rel, self.ws.judge_bin / "wb_check"
-        if not stub.is_file() or not tool.is_file():
-            return content, []
-        with tempfile.TemporaryDirectory(prefix="fill-") as tmp:
-            mine = Path(tmp) / Path(rel).name
-            mine.write_bytes(content)
-            code, out, _ = run_killable([str(tool), "--fill-missing", str(mine), str(stub), f"labs/{lab['name']}/{rel}",
-                                         f"tests/stubs/{lab['name']}/{rel}", "grader"], 30, cwd=tmp)
-            if code != 0:
-                return content, []
-            return mine.read_bytes(), [line for line in out.splitlines() if " predates exercise " in line]
-
     def list_tests(self, lab, built=True):
         exe = self.ws.build / f"lab{lab['nn']}_tests"
         if built and not exe.exists():  # the lab could not be built at all (every exercise is then marked broken)
@@ -197,39 +181,39 @@ class Grader:
         if cut:  # (a flood is graded as it ended; the student is told that its output was cut)
             self.printed[tag.rsplit("_", 1)[0]] = int(cut.group(1))
         copy_tape(tape, judged / "tape")
-        if stopped and explain:  # (the judge words a stopped runner as check does: tests/harness/tape.cpp)
+        ok, failures = self.judge_tape(lab, judge, gfilter, judged, jenv, stopped, explain if not held_out else None)
+        return ok, failures, out
+
+    def judge_tape(self, lab, judge, gfilter, judged, env, stopped, explain):
+        """The judge's run over the runner's copied tape: (passed, failures), the runner's `stopped` first.
+        With `explain` (an exercise id, for a visible run) the judge also words the verdict as check does
+        (--check, WB_CHECK_JSON: the lines under its row), which the student is shown (self.explained);
+        a stopped runner goes into its stopped.txt so that the table says so too (tests/harness/tape.cpp)."""
+        if stopped and explain:
             (judged / "tape" / "stopped.txt").write_text(
                 f"Ex{explain.replace('.', '_')}\t{stopped[0][1].removeprefix('ERROR: ')}\n")
         report, verdicts = judged / "report.json", judged / "verdicts.json"
         t0, seconds = time.time(), self.limit(self.timeout)
-        # --check: the judge also writes check's table for this exercise (WB_CHECK_JSON), whose lines the
-        # student is shown, as check shows them (the verdict's words are check's: one definition).
         jcode, jout, jtimed = run_killable([str(judge), f"--gtest_filter={gfilter}", "--judge", str(judged / "tape"),
                                             f"--gtest_output=json:{report}"] + (["--check"] if explain else []),
-                                           seconds, env=dict(jenv, WB_CHECK_JSON=str(verdicts)), cwd=judged)
-        if explain and not held_out:
+                                           seconds, env=dict(env, WB_CHECK_JSON=str(verdicts)), cwd=judged)
+        if explain:
             self.explained[(lab["nn"], explain)] = explanation(verdicts, explain)
         self.count("judge", t0)
         if jtimed and seconds < self.timeout:
             return False, stopped + [("", f"ERROR: the judge had not finished at the time limit of the whole job "
-                                      f"({CUT_SHORT})")], out
+                                      f"({CUT_SHORT})")]
         if jtimed:
             return False, stopped + [("", f"ERROR: timed out after {seconds} s while the judge drew this "
-                                      "exercise with your shaders (an endless loop in a shader?)")], out
+                                      "exercise with your shaders (an endless loop in a shader?)")]
         if not report.exists():
             return False, stopped + [("", "ERROR: the judge could not finish (a fault of the grader, not of the "
-                                      f"submission: tell the instructor):\n{jout[-2000:]}")], out
-        data = json.loads(report.read_text())
-        failures, count = [], 0
-        for suite in data.get("testsuites", []):
-            for t in suite.get("testsuite", []):
-                count += 1
-                for f in t.get("failures", []):
-                    failures.append((f"{suite['name']}.{t['name']}", f["failure"]))
+                                      f"submission: tell the instructor):\n{jout[-2000:]}")]
+        count, failures = gtest_failures(report)
         if count == 0:
-            return False, stopped + [("", "ERROR: no tests ran")], out
+            return False, stopped + [("", "ERROR: no tests ran")]
         failures = stopped + [(test, named_limit(msg)) for test, msg in failures]
-        return not failures, failures, out
+        return not failures, failures
 
     def plan(self, lab, judge, gfilter, judged, env, tape, uid):
         """The judge's planning pass over held-out tests: the lab runs (JSON lines {key, args}) and the
@@ -363,7 +347,7 @@ class Grader:
                     elif found.stat().st_size > MAX_FILE_BYTES:
                         notes.append(f"labs/{lab['name']}/{rel} is over 1 MiB: the stub is graded")
                     else:
-                        files[rel], added = self.fill_missing(lab, rel, found.read_bytes())
+                        files[rel], added = fill_missing(self.ws.judge_bin / "wb_check", lab, rel, found.read_bytes())
                         notes += added
                 found_files[lab["name"]] = (files, notes)
                 for rel, content in files.items():
@@ -422,14 +406,3 @@ class Grader:
 
 UNTOUCHED = "NOT IMPLEMENTED: the lab's exercise files are the stubs as handed out"
 
-
-def explanation(verdicts, ex_id):
-    """Exercise `ex_id`'s row of check's table, as the judge wrote it (WB_CHECK_JSON): its status and
-    the lines printed under it; None when the judge wrote none (it could not finish)."""
-    try:
-        row = json.loads(verdicts.read_text()).get(ex_id)
-    except (OSError, ValueError):
-        return None
-    if not isinstance(row, dict) or not isinstance(row.get("lines"), list):
-        return None
-    return {"status": str(row.get("status", "")), "lines": [str(line) for line in row["lines"]]}

@@ -1,5 +1,6 @@
 """How a run of student code ended, in the student's words, and the rules that read an exercise's
 outcome (what to grade again, alone): the grader's (grader.py) helpers that hold no state."""
+import json
 import re
 import shutil
 import signal
@@ -86,3 +87,27 @@ def copy_images(failures, images, tag):
                 shutil.copyfile(src, dest)
                 kept.append((test, label, dest.name))
     return kept
+
+
+def explanation(verdicts, ex_id):
+    """Exercise `ex_id`'s row of check's table, as the judge wrote it (WB_CHECK_JSON): its status and
+    the lines printed under it; None when the judge wrote none (it could not finish)."""
+    try:
+        row = json.loads(verdicts.read_text()).get(ex_id)
+    except (OSError, ValueError):
+        return None
+    if not isinstance(row, dict) or not isinstance(row.get("lines"), list):
+        return None
+    return {"status": str(row.get("status", "")), "lines": [str(line) for line in row["lines"]]}
+
+
+def gtest_failures(report):
+    """(how many tests ran, [(test, failure message)]) from a judge's --gtest_output=json report."""
+    data = json.loads(report.read_text())
+    failures, count = [], 0
+    for suite in data.get("testsuites", []):
+        for t in suite.get("testsuite", []):
+            count += 1
+            for f in t.get("failures", []):
+                failures.append((f"{suite['name']}.{t['name']}", f["failure"]))
+    return count, failures

@@ -9,6 +9,7 @@ import zipfile
 from pathlib import Path
 
 from .common import MAX_FILE_BYTES, ROOT
+from .sandbox import run_killable
 
 
 def is_hunt(exercise):
@@ -43,6 +44,24 @@ def load_labs(only=None, kinds="all"):
 def student_files(lab):
     """The whitelisted files of a lab, relative to labs/NN_name."""
     return sorted({e["file"] for e in lab["exercises"]})
+
+
+def fill_missing(tool, lab, rel, content):
+    """A file written against an earlier edition of the lab: the exercises it lacks are taken from
+    the stub, so only those are lost. `tool` is the judge build's wb_check, whose --fill-missing does it
+    as `check` does (one implementation: common/exercise/exercise_chunks.hpp). Returns (content, the
+    lines that say so); the content as it was where there is no stub or no tool."""
+    stub = ROOT / "labs" / lab["name"] / rel
+    if not stub.is_file() or not tool.is_file():
+        return content, []
+    with tempfile.TemporaryDirectory(prefix="fill-") as tmp:
+        mine = Path(tmp) / Path(rel).name
+        mine.write_bytes(content)
+        code, out, _ = run_killable([str(tool), "--fill-missing", str(mine), str(stub), f"labs/{lab['name']}/{rel}",
+                                     f"tests/stubs/{lab['name']}/{rel}", "grader"], 30, cwd=tmp)
+        if code != 0:
+            return content, []
+        return mine.read_bytes(), [line for line in out.splitlines() if " predates exercise " in line]
 
 
 # --- Submissions ----------------------------------------------------------------------------------
