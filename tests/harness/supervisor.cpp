@@ -106,11 +106,12 @@ void runExerciseRunner(const fs::path& tests, const std::string& id, const fs::p
   Process runner(spec);
   std::ofstream(tape / "running.pid") << runner.id() << "\n";  // (./workbook check --watch stops its session)
   const ProcessResult r = supervise(runner, [] {});
+  std::error_code ec;
+  fs::remove(tape / "running.pid", ec);  // (ended: its id may be another process's soon, which no watch may stop)
   if (const std::string why = stoppedReason(r, id, log, limits); !why.empty())
     appendLine(tape / "all" / "stopped.txt", tag + "\t" + why);
   if (fs::exists(part / "tape.jsonl"))
     std::ofstream(tape / "all" / "tape.jsonl", std::ios::app) << readAll(part / "tape.jsonl");
-  std::error_code ec;
   for (const auto& f : fs::directory_iterator(part, ec))
     if (f.path().filename().string().rfind("file-", 0) == 0)
       fs::copy_file(f.path(), tape / "all" / f.path().filename(), fs::copy_options::overwrite_existing, ec);
@@ -143,6 +144,8 @@ int judgeOnce(const fs::path& judge, const fs::path& tape, const fs::path& submi
     if (now != last) last = now, since = steadySeconds();
     if (steadySeconds() - since > limits.judgeTestSeconds) p.stop(ProcessResult::End::TimedOut);
   });
+  std::error_code ec;
+  fs::remove(tape / "running.pid", ec);  // (as the runner's above)
   if (r.end == ProcessResult::End::NotStarted)
     std::fprintf(stderr, "workbook: the judge did not start: %s\n", r.detail.c_str());
   return r.end == ProcessResult::End::TimedOut ? 124 : r.code;
