@@ -316,6 +316,16 @@ function(add_lab lab)
   target_compile_options(lab${nn}_test_obj PRIVATE ${WB_WARNINGS})
 
   _wb_lab_variant(${lab} ${nn} student "" ${lab_dir})
+  # The student edition: a file that predates one of the lab's exercises gets its stub before it
+  # compiles (cmake/FillFromStubs.cmake), in every build of the lab, as check and the grader do.
+  if(EXISTS ${PROJECT_SOURCE_DIR}/tests/stubs/${lab} AND TARGET wb_check)
+    add_custom_target(fill_${nn}
+      COMMAND ${CMAKE_COMMAND} -DWB_CHECK=$<TARGET_FILE:wb_check> -DSTUBS=${PROJECT_SOURCE_DIR}/tests/stubs/${lab}
+              -DLAB_DIR=${lab_dir} -DLAB=${lab} -P ${PROJECT_SOURCE_DIR}/cmake/FillFromStubs.cmake
+      VERBATIM)
+    add_dependencies(fill_${nn} wb_check)
+    add_dependencies(lab${nn}_exercise fill_${nn})
+  endif()
   _wb_register_tests(${lab} ${nn} student lab${nn}_tests "${ids}")
   if(EXISTS ${PROJECT_SOURCE_DIR}/solutions/${lab})
     _wb_lab_variant(${lab} ${nn} solution "_solution" ${PROJECT_SOURCE_DIR}/solutions/${lab})

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # check in the student edition, on a lab 01 file written before its bug hunt 01.H1 was added: the
 # hunt's stub is put into the file from tests/stubs/ (as the grader grades it), with one line that
-# says so, and nothing else of the file changes; a second check adds nothing.
+# says so, and nothing else of the file changes; a second check adds nothing. The build's own step
+# (cmake/FillFromStubs.cmake, for check_NN where there is no ./workbook) does the same.
 # Usage: check_fills_earlier_edition_test.sh BUILD_DIR
 set -euo pipefail
 build=${1:?usage: check_fills_earlier_edition_test.sh BUILD_DIR}
@@ -31,4 +32,10 @@ grep -q "// EXERCISE 01.H1" "$tmp/labs/$name/exercise.cpp" || fail "01.H1's stub
 ! diff "$tmp/before.cpp" "$tmp/labs/$name/exercise.cpp" | grep -q '^<' || fail "the student's own lines changed"
 again=$(cd "$tmp" && fill_from_stubs "$name")
 [ -z "$again" ] || fail "a second check added more: $again"
+# The build's step, on the file as it was: the same line, the same file.
+filled="$tmp/labs/$name/exercise.cpp" && cp "$filled" "$tmp/filled.cpp" && cp "$tmp/before.cpp" "$filled"
+step=$(cmake -DWB_CHECK="$build/wb_check" -DSTUBS="$tmp/tests/stubs/$name" -DLAB_DIR="$tmp/labs/$name" -DLAB="$name" \
+  -P "$root/cmake/FillFromStubs.cmake")
+[ "$step" = "$out" ] || fail "the build's step says '$step', check says '$out'"
+cmp -s "$filled" "$tmp/filled.cpp" || fail "the build's step fills the file otherwise than check"
 echo "ok: $out"
