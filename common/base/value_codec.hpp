@@ -1,6 +1,6 @@
 /// @file value_codec.hpp
 /// Exercise values as JSON, exactly: floats by their bits (so NaN, infinity and -0 survive) and
-/// doubles by their 64 bits. The grader's tapes (tests/harness/tape.hpp) and the app's record of
+/// doubles by their 64 bits. The grader's tapes (common/judge/tape.hpp) and the app's record of
 /// its C++ exercises (exercise_tape.hpp) both use it.
 #pragma once
 #include <glm/glm.hpp>

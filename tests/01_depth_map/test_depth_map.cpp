@@ -1,10 +1,10 @@
 // Lab 01 tests. Layer 1 checks each exercise function against analytic values (C++) or a
 // double-precision reference (GLSL); layer 2 renders the canonical scene and compares the
 // visibility buffer with golden data made from the solution (./workbook golden 01).
+#include "common/judge/harness.hpp"
+#include "common/judge/hunt.hpp"
 #include "common/platform/gl.hpp"
 #include "exercise.hpp"
-#include "tests/harness/harness.hpp"
-#include "tests/harness/hunt.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -1,11 +1,11 @@
 // Lab 02 tests. Layer 1: each remedy's formula against a double-precision reference or GL state;
 // layer 2: the three bias scenes against golden visibility (./workbook golden 02).
 #include "common/base/variant.hpp"
+#include "common/judge/harness.hpp"
+#include "common/judge/hunt.hpp"
+#include "common/judge/picture.hpp"
 #include "common/platform/gl.hpp"
 #include "exercise.hpp"
-#include "tests/harness/harness.hpp"
-#include "tests/harness/hunt.hpp"
-#include "tests/harness/picture.hpp"
 
 #include <algorithm>
 #include <cmath>

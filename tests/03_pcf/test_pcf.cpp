@@ -2,10 +2,10 @@
 // 16x16 depth map (nearest-texel lookups, depth 1 outside the map); layer 2: the canonical scene
 // against golden visibility (./workbook golden 03).
 #include "common/base/variant.hpp"
+#include "common/judge/harness.hpp"
+#include "common/judge/hunt.hpp"
 #include "common/platform/gl.hpp"
 #include "common/platform/texture_io.hpp"
-#include "tests/harness/harness.hpp"
-#include "tests/harness/hunt.hpp"
 
 #include <glm/gtc/constants.hpp>
 

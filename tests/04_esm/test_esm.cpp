@@ -1,11 +1,11 @@
 // Lab 04 tests. Layer 1: each ESM step against a double-precision reference; layer 2: the canonical
 // scene against golden visibility (./workbook golden 04).
 #include "common/base/variant.hpp"
+#include "common/judge/harness.hpp"
+#include "common/judge/hunt.hpp"
 #include "common/platform/gl.hpp"
 #include "common/platform/texture_io.hpp"
 #include "exercise.hpp"
-#include "tests/harness/harness.hpp"
-#include "tests/harness/hunt.hpp"
 
 #include <algorithm>
 #include <cfloat>

@@ -1,8 +1,8 @@
 // Lab 05 tests. Layer 1: each VSM step against a reference; the lab's own experiments (three planes,
 // two planes) against the analytic results; layer 2: the bench scene against golden visibility.
+#include "common/judge/harness.hpp"
+#include "common/judge/hunt.hpp"
 #include "exercise.hpp"
-#include "tests/harness/harness.hpp"
-#include "tests/harness/hunt.hpp"
 
 #include <algorithm>
 #include <cmath>

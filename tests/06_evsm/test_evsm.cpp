@@ -1,8 +1,8 @@
 // Lab 06 tests. Layer 1: the warps and the two-sided bound against a double-precision reference;
 // layer 2: the bench scene against golden visibility (./workbook golden 06).
+#include "common/judge/harness.hpp"
+#include "common/judge/hunt.hpp"
 #include "exercise.hpp"
-#include "tests/harness/harness.hpp"
-#include "tests/harness/hunt.hpp"
 
 #include <algorithm>
 #include <cfloat>

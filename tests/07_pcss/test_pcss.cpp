@@ -2,10 +2,10 @@
 // the blocker search and PCSS against a double-precision emulation of the same taps on 64x64 maps
 // whose depths are known; layer 2: the canonical scenes against golden visibility
 // (./workbook golden 07), and PCSS measured against the ray-traced area light.
+#include "common/judge/harness.hpp"
+#include "common/judge/picture.hpp"
 #include "common/platform/gl.hpp"
 #include "common/platform/texture_io.hpp"
-#include "tests/harness/harness.hpp"
-#include "tests/harness/picture.hpp"
 
 #include <glm/gtc/constants.hpp>
 

@@ -5,15 +5,15 @@
 // visibility (./workbook golden 08).
 #include "common/base/variant.hpp"
 #include "common/exercise/glsl_harness.hpp"
+#include "common/judge/harness.hpp"
+#include "common/judge/hunt.hpp"
+#include "common/judge/tape.hpp"
 #include "common/platform/gl.hpp"
 #include "common/platform/shader.hpp"
 #include "common/platform/texture_io.hpp"
 #include "common/scene/scene.hpp"
 #include "common/shadows/shadow_map.hpp"
 #include "exercise.hpp"
-#include "tests/harness/harness.hpp"
-#include "tests/harness/hunt.hpp"
-#include "tests/harness/tape.hpp"
 
 #include <algorithm>
 #include <array>

@@ -3,10 +3,10 @@
 // other way round); the silhouette test and the extrusion on synthetic triangles; the stencil
 // operations; the near-plane test against boxes placed by hand. Layer 2: the casters against golden
 // visibility, z-pass and z-fail, the camera inside a volume, and exactness against ray casting.
+#include "common/judge/harness.hpp"
+#include "common/judge/hunt.hpp"
 #include "common/scene/mesh.hpp"
 #include "exercise.hpp"
-#include "tests/harness/harness.hpp"
-#include "tests/harness/hunt.hpp"
 
 #include <glad/gl.h>
 

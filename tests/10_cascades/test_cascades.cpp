@@ -1,13 +1,13 @@
 // Lab 10 tests. Layer 1: the split formulas against values worked out by hand (lambda 0, 0.5 and 1),
 // slice corners of known frusta, the crop matrix mapping the corners onto [-1, 1], texel snapping,
 // selection at the split boundaries and blend weights at the band's edges.
+#include "common/judge/harness.hpp"
+#include "common/judge/hunt.hpp"
+#include "common/judge/picture.hpp"
 #include "common/platform/gl.hpp"
 #include "common/platform/image.hpp"
 #include "common/platform/texture_io.hpp"
 #include "exercise.hpp"
-#include "tests/harness/harness.hpp"
-#include "tests/harness/hunt.hpp"
-#include "tests/harness/picture.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -4,8 +4,8 @@
 // stub file is broken in 01.4's chunk and handed to the lab through WB_SHADER_OVERLAY.
 #include "common/base/variant.hpp"
 #include "common/exercise/glsl_harness.hpp"
+#include "common/judge/harness.hpp"
 #include "common/platform/shader.hpp"
-#include "tests/harness/harness.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 # check's own path (runner, then judge, as ./workbook check runs them) on mutants whose C++ exercise
 # feeds the other exercises' scenes: only the mutant's exercise may be marked wrong. The runner's app
 # replays the reference's results for the other C++ exercises while it records the graded one
-# (tests/harness/reference_calls.hpp); before that, 10.1's integer fraction made 10.2-10.4 wrong.
+# (common/judge/reference_calls.hpp); before that, 10.1's integer fraction made 10.2-10.4 wrong.
 # Usage: check_attribution_test.sh BUILD_DIR SCRATCH_DIR
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)

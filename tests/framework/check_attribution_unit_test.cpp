@@ -1,9 +1,9 @@
-// What check says where the student edition cannot isolate an exercise (tests/harness/attribution.hpp),
+// What check says where the student edition cannot isolate an exercise (common/judge/attribution.hpp),
 // and the endless-loop reading of a count of 50000 (diagnosis.cpp). This binary runs as the student
 // edition does: its variant has no solution folder.
 #include "common/base/variant.hpp"
-#include "tests/harness/attribution.hpp"
-#include "tests/harness/diagnosis.hpp"
+#include "common/judge/attribution.hpp"
+#include "common/judge/diagnosis.hpp"
 
 #include <gtest/gtest.h>
 

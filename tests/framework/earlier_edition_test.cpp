@@ -3,8 +3,8 @@
 #include "common/base/variant.hpp"
 #include "common/exercise/exercise_chunks.hpp"
 #include "common/exercise/glsl_harness.hpp"
+#include "common/judge/harness.hpp"
 #include "common/platform/shader.hpp"
-#include "tests/harness/harness.hpp"
 
 #include <gtest/gtest.h>
 

@@ -9,12 +9,12 @@
 #include "common/exercise/exercise_source_rules.hpp"
 #include "common/exercise/exercise_tape.hpp"
 #include "common/exercise/run_record.hpp"
+#include "common/judge/harness.hpp"
 #include "common/platform/shader.hpp"
 #include "common/platform/texture_io.hpp"
 #include "common/scene/scene.hpp"
 #include "common/shadows/prefilter.hpp"
 #include "common/truth/ground_truth.hpp"
-#include "tests/harness/harness.hpp"
 
 #include <pthread.h>
 #include <sys/wait.h>
@@ -268,7 +268,7 @@ TEST_F(GlTest, HotReloadKeepsTheBrokenExercisesLastGoodChunk) {
 }
 
 // A run may replay some exercises (the reference's results) and record the others (check's runner,
-// tests/harness/reference_calls.hpp): an exercise recorded during the run is never replayed from
+// common/judge/reference_calls.hpp): an exercise recorded during the run is never replayed from
 // its own first call, and the saved file holds only what was recorded.
 TEST(ExerciseTape, ReplaysSomeExercisesAndRecordsTheOthers) {
   const fs::path dir = scratch("tape");

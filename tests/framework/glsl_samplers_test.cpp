@@ -3,8 +3,8 @@
 // texels, and each answer below is worked out by hand.
 #include "common/base/error.hpp"
 #include "common/exercise/glsl_harness.hpp"
+#include "common/judge/harness.hpp"
 #include "common/platform/texture_io.hpp"
-#include "tests/harness/harness.hpp"
 
 #include <string>
 #include <vector>

@@ -1,10 +1,10 @@
 // Text burnt into frames (labels, presenter captions): DejaVu Sans through a signed-distance atlas,
 // with the symbols captions use, and captions large enough for a lecture hall.
 #include "common/platform/label.hpp"
+#include "common/judge/harness.hpp"
 #include "common/platform/font.hpp"
 #include "common/platform/texture_io.hpp"
 #include "common/shell/presenter.hpp"
-#include "tests/harness/harness.hpp"
 
 #include <string>
 #include <vector>

@@ -2,7 +2,7 @@
 // binary older than the C++ exercise file (it may hold older code), and an exercise.cpp edited after
 // the running app was built is noted (the verdicts are the running build's, not the edit's).
 #include "common/exercise/live_checks.hpp"
-#include "tests/harness/harness.hpp"
+#include "common/judge/harness.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // implementation at hand (Mesa 25's llvmpipe and a GPU would hang on it without).
 #include "common/platform/loop_guard.hpp"
 #include "common/exercise/glsl_harness.hpp"
-#include "tests/harness/harness.hpp"
+#include "common/judge/harness.hpp"
 
 #include <algorithm>
 #include <string>

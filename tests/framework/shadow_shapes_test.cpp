@@ -1,6 +1,7 @@
 // Shadow maps of every shape render a known scene, the debug views show them the right way up, and
 // the frame target counts in its stencil. Every expected value is worked out by hand in a comment.
 #include "common/base/variant.hpp"
+#include "common/judge/harness.hpp"
 #include "common/platform/frame_target.hpp"
 #include "common/platform/shader.hpp"
 #include "common/platform/texture_io.hpp"
@@ -8,7 +9,6 @@
 #include "common/shadows/shadow_map.hpp"
 #include "common/shell/debug_views.hpp"
 #include "common/truth/measurement.hpp"
-#include "tests/harness/harness.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ./workbook check (wb_check, tests/harness/supervisor.hpp, the same on every OS) runs each
+# ./workbook check (wb_check, common/judge/supervisor.hpp, the same on every OS) runs each
 # exercise's runner alone, in a session of its own, with a time limit: a runner that loops forever is stopped at the limit with every process it
 # started, and one that crashes is named with its signal; both reasons reach the judge
 # (stopped.txt), and the other exercises' records are kept; one that prints without end is stopped

@@ -12,7 +12,13 @@ import time
 from grader_test_support import ROOT, check, finish
 
 sys.path.insert(0, str(ROOT / "tools"))
-from grading.grader import runner_stopped
+import tempfile
+from pathlib import Path
+
+import shutil
+
+from grading.outcomes import supervised_run
+from grading.workspace import copy_tape
 from grading.sandbox import KEEP, run_killable
 
 # A print in an endless loop: its time limit stops it, and the grader keeps a bounded part.
@@ -22,8 +28,6 @@ took = time.monotonic() - t0
 check(timed_out and took < 15, f"a flooding run was not stopped at its time limit ({took:.1f} s, timed out: {timed_out})")
 check(len(out) < 2 * KEEP + 4096, f"the grader kept {len(out)} bytes of its output (at most twice {KEEP})")
 check("[grader: cut here:" in out and "bytes of output left out" in out, "the kept output says where it was cut")
-stopped = runner_stopped(code, out, timed_out, 4)
-check(bool(stopped) and "timed out after 4 s" in stopped[0][1], f"the student is told why the run stopped: {stopped}")
 peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss // 1024
 check(peak < 200, f"the grader's peak memory stayed small while the flood went by: {peak} MiB")
 
@@ -33,7 +37,38 @@ check(code == 0 and not timed_out and out.startswith("FIRST") and out.rstrip().e
       f"a run that printed 100 MB kept its exit code {code} and its first and last lines")
 check("bytes of output left out (the run printed 95 MB)" in out, "and says that the middle was left out: "
       + next((l for l in out.splitlines() if "grader:" in l), "no note"))
-check(not runner_stopped(code, out, timed_out, 60), "a run that printed a lot but ended well is not called stopped")
+
+# A runner's log (wb_check writes it in the sandbox, up to its cap) is read the same way: head and tail,
+# the cut said, what it printed counted, and a run that ended well not called stopped. A log swapped
+# for a FIFO or a link is not read at all (a FIFO would stop the grader; a link could quote its files).
+with tempfile.TemporaryDirectory() as tmp:
+    tape = Path(tmp)
+    (tape / "all").mkdir()
+    with open(tape / "Ex01_1.log", "wb") as f:
+        f.write(b"[ RUN      ] GlTest.Ex01_1_First\n" + b"x" * (100 << 20) + b"\nLAST\n")
+    ran = supervised_run(tape, "01.1", 0, "", False, 60)
+    check(not ran.stopped and ran.printed_mb == 100 and len(ran.output) < 2 * KEEP + 4096
+          and ran.output.startswith("[ RUN") and ran.output.rstrip().endswith("LAST"),
+          f"a 100 MB log: stopped {ran.stopped}, {ran.printed_mb} MB counted, {len(ran.output)} bytes kept")
+    (tape / "all" / "stopped.txt").write_text("Ex01_1\t01.1 timed out after 4 s and was stopped: an endless loop?\n")
+    ran = supervised_run(tape, "01.1", 0, "", False, 60)
+    check(ran.timed_out and ran.stopped == [("GlTest.Ex01_1_First", "ERROR: 01.1 timed out after 4 s and was stopped: "
+                                            "an endless loop?")], f"wb_check's words are the student's: {ran.stopped}")
+    (tape / "Ex01_1.log").unlink()
+    os.mkfifo(tape / "Ex01_1.log")
+    (tape / "all" / "stopped.txt").unlink()
+    (tape / "all" / "stopped.txt").symlink_to("/etc/passwd")
+    t0 = time.monotonic()
+    ran = supervised_run(tape, "01.1", 0, "", False, 60)
+    check(ran.output == "" and not ran.stopped and time.monotonic() - t0 < 5, "a FIFO log and a linked stopped.txt are not read")
+    # The joined tape the judge copies: a link there (to another run's tape, a held-out one) is not followed.
+    other = tape / "other"
+    other.mkdir()
+    (other / "tape.jsonl").write_text("{}\n")
+    shutil.rmtree(tape / "all")
+    (tape / "all").symlink_to(other)
+    copy_tape(tape / "all", tape / "judged" / "all")
+    check(not (tape / "judged" / "all" / "tape.jsonl").exists(), "a linked all/ is not copied for the judge")
 
 # A run that closes its output and goes on (a child left holding nothing) still ends at its limit.
 t0 = time.monotonic()

@@ -227,7 +227,8 @@ const int forged = [] {
   if (fork() != 0) _exit(0);
   const std::string here = getcwd(nullptr, 0);
   for (int i = 0; i < 6000; ++i) {
-    for (const std::string& f : {here + "/tape.jsonl", here + "/../results.json", std::string("/autograder/results/results.json")})
+    for (const std::string& f : {here + "/tape.jsonl", here + "/all/tape.jsonl", here + "/../results.json",
+                                 std::string("/autograder/results/results.json")})
       std::ofstream(f) << "{\"score\": 100, \"forged\": true}\n";
     usleep(10000);
   }
@@ -240,12 +241,19 @@ FIFO_TAPE = r"""
 #include <sys/stat.h>
 #include <unistd.h>
 #include <cstdio>
+#include <filesystem>
 namespace {
-// As the runner exits, its tape becomes a FIFO: a grader that opened it would wait for ever.
+// As the runner exits, every tape it can reach becomes a FIFO (its own, the joined one wb_check
+// writes, and one where it runs): a grader or a supervisor that opened one would wait for ever.
 struct SwapTape {
   ~SwapTape() {
-    std::remove("tape.jsonl");
-    mkfifo("tape.jsonl", 0666);
+    std::error_code ec;
+    for (const auto& f : std::filesystem::recursive_directory_iterator(".", ec))
+      if (f.path().filename() == "tape.jsonl") {
+        std::remove(f.path().c_str());
+        mkfifo(f.path().c_str(), 0666);
+      }
+    mkfifo("all/tape.jsonl", 0666);
   }
 } swapTape;
 }  // namespace

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Red-team tests of the tape a runner hands the judge (tests/harness/tape.hpp), on lab 10:
+# Red-team tests of the tape a runner hands the judge (common/judge/tape.hpp), on lab 10:
 # 1. a recorded app run whose list of calls for the graded exercise is empty must not let the
 #    judge's trusted app fall back to its own (the solution's) code: the scene test fails;
 # 2. a tape line nested a million deep must not crash the judge (it is ignored as malformed);

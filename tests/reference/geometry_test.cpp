@@ -5,11 +5,11 @@
 // through GpuScene, with depth clamp on request.
 #include "common/base/error.hpp"
 #include "common/base/variant.hpp"
+#include "common/judge/harness.hpp"
 #include "common/platform/shader.hpp"
 #include "common/platform/texture_io.hpp"
 #include "common/scene/mesh.hpp"
 #include "common/scene/scene.hpp"
-#include "tests/harness/harness.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 

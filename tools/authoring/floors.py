@@ -21,12 +21,19 @@ INCLUDE = re.compile(r'^\s*#\s*include\s+"common/([^"]+)"', re.M)
 SYSTEM = re.compile(r'^\s*#\s*include\s+<([^>]+)>', re.M)
 # Libraries a floor must not reach (its README says why): base knows nothing of rendering, and only
 # the truth floor casts rays.
+# GoogleTest is the judge floor's alone: nothing a lab's app is built from may use it.
+TESTING = ("gtest/", "gmock/")
 FORBIDDEN = {
-    "base": ("glad/", "GLFW/", "EGL/", "imgui", "embree"),
-    "platform": ("embree",),
-    "scene": ("imgui", "embree"),
-    "shadows": ("imgui", "embree"),
+    "base": ("glad/", "GLFW/", "EGL/", "imgui", "embree") + TESTING,
+    "platform": ("embree",) + TESTING,
+    "scene": ("imgui", "embree") + TESTING,
+    "shadows": ("imgui", "embree") + TESTING,
+    "truth": TESTING,
+    "exercise": TESTING,
+    "shell": TESTING,
 }
+# The floor every lab's tests, check and the grader's judge are built on: a lab's app never includes it.
+TESTS_ONLY = "judge"
 SOURCES = (".hpp", ".cpp", ".h")
 
 
@@ -109,7 +116,10 @@ def lab_problems(root):
             for m in re.finditer(r'^\s*#\s*include\s+"([^"]+)"', text, re.M):
                 target, line = m.group(1), text.count("\n", 0, m.start()) + 1
                 framework = target.startswith("common/") and floor_of(target[7:], levels) is not None
-                if not framework and target not in own:
+                if framework and floor_of(target[7:], levels) == TESTS_ONLY:
+                    found.append(f'{rel}:{line}: includes "{target}": common/{TESTS_ONLY}/ is its tests\' floor '
+                                 "(check and the grader's judge), never part of a lab's app")
+                elif not framework and target not in own:
                     found.append(f'{rel}:{line}: includes "{target}": a lab includes the framework\'s floors '
                                  "(common/<floor>/...) and its own files only")
                 elif framework and f.name == "main.cpp" and target != "common/shell/lab.hpp" and \
@@ -139,8 +149,11 @@ def self_test(root):
         "a forwarder used inside a floor": ("scene/camera.hpp", '#include "common/error.hpp"\n', "in no floor"),
         "a file outside the floors": ("extra/stray.cpp", "int x;\n", "outside every floor"),
         "a library a floor must not use": ("base/strf.hpp", "#include <imgui.h>\n", "must not use"),
-        "a lab reaching into tests/": ("../labs/01_depth_map/main.cpp", '#include "tests/harness/harness.hpp"\n',
+        "a lab reaching into tests/": ("../labs/01_depth_map/main.cpp", '#include "tests/framework/label.hpp"\n',
                                        "its own files only"),
+        "a lab reaching into the judge": ("../labs/01_depth_map/main.cpp", '#include "common/judge/harness.hpp"\n',
+                                          "its tests' floor"),
+        "GoogleTest below the judge": ("shell/lab.hpp", "#include <gtest/gtest.h>\n", "must not use"),
         "a lab reaching into another": ("../labs/01_depth_map/main.cpp", '#include "../02_bias/exercise.hpp"\n',
                                         "its own files only"),
         "a lab including what it does not use": ("../labs/01_depth_map/main.cpp",

@@ -7,7 +7,7 @@ its exercise's tests with --signatures, which writes the value each failing test
 and the description go to tests/hints/NN_name.json (public: values and words, no solution code),
 and the descriptions to the "Common mistakes" section of labs/NN_name/README.md.
 `check` then names the mistake when a student's failing test sees the same value
-(tests/harness/diagnosis.cpp). Run it after changing a mutant or a test, and commit the result.
+(common/judge/diagnosis.cpp). Run it after changing a mutant or a test, and commit the result.
 Naming labs (01, 09_shadow_volumes) records those only, and leaves the others' hints as they are.
 """
 import json

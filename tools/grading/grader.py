@@ -1,9 +1,7 @@
 """One submission graded: the runner records in the sandbox, the judge decides
 (docs/grading-trust.md)."""
 import concurrent.futures
-import json
 import os
-import re
 import secrets
 import shutil
 import tarfile
@@ -12,16 +10,16 @@ import threading
 import time
 import traceback
 import zipfile
-from pathlib import Path
 
 from .chunks import BUILD_TIMED_OUT, DEFAULT_BUILD_TIMEOUT, build_failure, chunk, keep_only_chunks
 from .common import MAX_FILE_BYTES, ROOT, log
 from .outcomes import (CUT_SHORT, copy_images, explanation, grader_failed, gtest_failures, hung_by_itself,
-                       left_as_stub, named_limit, runner_stopped, runs_app)
+                       left_as_stub, named_limit, runs_app, supervised_run, tag_id)
 from .report import Results, first_line
 from .sandbox import minimal_env, run_killable, sweep_leftovers
+from .heldout import plan_requests
 from .submission import fill_missing, find_student_file, student_files, unpack
-from .workspace import copy_tape, own
+from .workspace import copy_tape
 
 
 class Grader:
@@ -140,7 +138,7 @@ class Grader:
         student's test binary runs as the *runner* in the sandbox and records what its C++ exercises
         produce on a tape; the solution's test binary, the *judge*, replays that tape, draws every
         scene itself (with the student's recorded C++ results, or the student's GLSL chunk) and
-        decides. The runner's exit code, output and files claim nothing (tests/harness/tape.hpp).
+        decides. The runner's exit code, output and files claim nothing (common/judge/tape.hpp).
         Held-out tests are in the judge only: a planning pass of the judge says which lab runs the
         runner must record (`held_out`). `explain`: the exercise whose lines of check's table the
         student is shown (self.explained), for a visible run."""
@@ -152,7 +150,7 @@ class Grader:
         shutil.rmtree(judged, ignore_errors=True)
         judged.mkdir(parents=True)
         # WB_VARY_SEED: scene tests turn the scene a little and compare with the solution's render of
-        # the same variation, not with the published golden (tests/harness/harness.cpp). Each
+        # the same variation, not with the published golden (common/judge/harness.cpp). Each
         # process has a home of its own: nothing in a shared /tmp (a Mesa .drirc) reaches it.
         # (minimal_env: nothing else of the grader's environment reaches the student's code)
         env = minimal_env(HOME=str(tape), TMPDIR=str(tape), WB_STRICT_GL="1", WB_VARY_SEED=str(self.vary_seed),
@@ -166,40 +164,54 @@ class Grader:
             else [f"--gtest_filter={gfilter}"]
         binds = self.ws.runner_binds(tape, held_out)
         t0, seconds = time.time(), self.limit(self.timeout)
-        code, out, timed_out = self.sandbox.run([str(runner)] + what + ["--runner", str(tape)], seconds,
-                                                env=env, cwd=tape, uid=uid, **binds)
+        # The runner runs under wb_check, check's own supervisor (common/judge/supervisor.hpp): the
+        # same limit, cap on output and words for a run that was stopped, in check and here. The
+        # sandbox's own time limit, a little longer, only catches wb_check itself.
+        check = [str(self.ws.framework / "wb_check"), "--runner", str(runner), tag_id(tag), str(tape)]
+        code, out, timed_out = self.sandbox.run(
+            check + what, seconds + 10, env=dict(env, WB_CHECK_TIMEOUT=str(seconds), WB_CHECK_IN_SANDBOX="1"),
+            cwd=tape, uid=uid, **binds)
         self.count("runner", t0)
+        ran = supervised_run(tape, tag_id(tag), code, out, timed_out, seconds + 10, self.sandbox.cpu_seconds)
         if held_out:  # the held-out inputs go as soon as they are used, and nothing of them is quoted
             shutil.rmtree(tape / "inputs", ignore_errors=True)
             (tape / "requests.jsonl").unlink(missing_ok=True)
-            out = ""
-        stopped = runner_stopped(code, out, timed_out, seconds, self.sandbox.cpu_seconds)  # (shown first)
-        if timed_out and seconds < self.timeout:  # (not this exercise's time limit: the job's)
+            ran.output = ""
+        stopped = ran.stopped  # (shown first)
+        if stopped and seconds < self.timeout and ran.timed_out:  # (not this exercise's time limit: the job's)
             stopped = [(test, f"ERROR: not finished at the time limit of the whole job ({CUT_SHORT})")
                        for test, _ in stopped]
-        cut = re.search(r"\[grader: cut here: \d+ bytes of output left out \(the run printed (\d+) MB\)\]", out)
-        if cut:  # (a flood is graded as it ended; the student is told that its output was cut)
-            self.printed[tag.rsplit("_", 1)[0]] = int(cut.group(1))
-        copy_tape(tape, judged / "tape")
+        if ran.printed_mb is not None:  # (a flood below the cap is graded as it ended; the student is told)
+            self.printed[tag.rsplit("_", 1)[0]] = ran.printed_mb
+        out = ran.output
+        copy_tape(tape / "all", judged / "all")
         ok, failures = self.judge_tape(lab, judge, gfilter, judged, jenv, stopped, explain if not held_out else None)
         return ok, failures, out
 
     def judge_tape(self, lab, judge, gfilter, judged, env, stopped, explain):
-        """The judge's run over the runner's copied tape: (passed, failures), the runner's `stopped` first.
-        With `explain` (an exercise id, for a visible run) the judge also words the verdict as check does
-        (--check, WB_CHECK_JSON: the lines under its row), which the student is shown (self.explained);
-        a stopped runner goes into its stopped.txt so that the table says so too (tests/harness/tape.cpp)."""
+        """The judge's run over the runner's copied tape (`judged`/all): (passed, failures), the runner's
+        `stopped` first. It runs under wb_check --judge, as in check (common/judge/supervisor.hpp): a
+        test that makes no progress for half the exercise's limit is stopped, written down for its
+        exercise, and the rest judged without it. With `explain` (an exercise id, for a visible run) the
+        judge also words the verdict as check does (--check, WB_CHECK_JSON: the lines under its row),
+        which the student is shown (self.explained); a stopped runner goes into its stopped.txt so that
+        the table says so too (common/judge/tape.cpp)."""
+        tape = judged / "all"
         if stopped and explain:
-            (judged / "tape" / "stopped.txt").write_text(
-                f"Ex{explain.replace('.', '_')}\t{stopped[0][1].removeprefix('ERROR: ')}\n")
+            (tape / "stopped.txt").write_text(f"Ex{explain.replace('.', '_')}\t{stopped[0][1].removeprefix('ERROR: ')}\n")
+        before = (tape / "stopped.txt").read_text() if (tape / "stopped.txt").exists() else ""
         report, verdicts = judged / "report.json", judged / "verdicts.json"
         t0, seconds = time.time(), self.limit(self.timeout)
-        jcode, jout, jtimed = run_killable([str(judge), f"--gtest_filter={gfilter}", "--judge", str(judged / "tape"),
-                                            f"--gtest_output=json:{report}"] + (["--check"] if explain else []),
-                                           seconds, env=dict(env, WB_CHECK_JSON=str(verdicts)), cwd=judged)
+        args = [f"--gtest_filter={gfilter}", f"--gtest_output=json:{report}"] + (["--check"] if explain else [])
+        limits = {"WB_CHECK_TIMEOUT": str(self.timeout), "WB_CHECK_JUDGE_TIMEOUT": str(max(self.timeout // 2, 10))}
+        jcode, jout, jtimed = run_killable([str(self.ws.judge_bin / "wb_check"), "--judge", lab["nn"], str(judge),
+                                            str(judged), env["WB_SUBMISSION_DIR"]] + args, seconds,
+                                           env=dict(env, WB_CHECK_JSON=str(verdicts), **limits), cwd=judged)
         if explain:
             self.explained[(lab["nn"], explain)] = explanation(verdicts, explain)
         self.count("judge", t0)
+        after = (tape / "stopped.txt").read_text() if (tape / "stopped.txt").exists() else ""
+        stopped = stopped + [("", f"ERROR: {line.partition(chr(9))[2]}") for line in after[len(before):].splitlines()]
         if jtimed and seconds < self.timeout:
             return False, stopped + [("", f"ERROR: the judge had not finished at the time limit of the whole job "
                                       f"({CUT_SHORT})")]
@@ -216,34 +228,12 @@ class Grader:
         return not failures, failures
 
     def plan(self, lab, judge, gfilter, judged, env, tape, uid):
-        """The judge's planning pass over held-out tests: the lab runs (JSON lines {key, args}) and the
-        calls of C++ exercises on held-out inputs ({key, call, inputs}) the runner must record, written into its tape folder as requests.jsonl, with each input file of
-        the instructor's (a held-out scene) copied beside it, since the runner cannot read them."""
-        plan = judged / "plan.jsonl"
-        (judged / "empty").mkdir()
+        """The held-out tests' requests for the runner (heldout.plan_requests), timed as the judge's."""
         t0 = time.time()
-        code, _, timed_out = run_killable([str(judge), f"--gtest_filter={gfilter}", "--judge", str(judged / "empty")],
-                                            self.limit(self.timeout), env=dict(env, WB_PLAN=str(plan)), cwd=judged)
-        self.count("judge", t0)
-        if timed_out or code < 0:  # a partial plan would read as results the student's build never recorded
-            raise RuntimeError(f"planning the held-out tests {gfilter} {'timed out' if timed_out else 'crashed'} (a "
-                               "fault of the grader: tell the instructor)")
-        inputs, lines = tape / "inputs", []
-        for line in plan.read_text().splitlines() if plan.exists() else []:
-            request = json.loads(line)
-            for k, arg in enumerate(request.get("args", [])):  # (a call request has inputs, no files)
-                path = Path(arg)
-                hidden = ROOT / "tests/hidden" / lab["name"]  # (the lab's held-out inputs, nothing else)
-                if path.is_absolute() and path.is_file() and hidden in path.resolve().parents:
-                    inputs.mkdir(exist_ok=True)
-                    copy = inputs / f"{len(list(inputs.iterdir()))}-{path.name}"
-                    shutil.copyfile(path, copy)
-                    request["args"][k] = str(copy)
-            lines.append(json.dumps(request))
-        requests = tape / "requests.jsonl"
-        requests.write_text("".join(l + "\n" for l in lines))
-        own(tape, uid)
-        return requests
+        try:
+            return plan_requests(lab, judge, gfilter, judged, env, tape, uid, self.limit(self.timeout))
+        finally:
+            self.count("judge", t0)
 
     def grade_exercise(self, lab, e, tests, broken, replay_uses=()):
         """(ok, failures, images, hidden result, has hidden tests) of one exercise with the current build."""
@@ -335,23 +325,7 @@ class Grader:
             self.ws.reset_to_stubs()
             self.ws.fresh_outputs()
             t_build = time.time()
-            found_files = {}
-            for lab in self.labs:  # every lab's files first: one parallel build for all when they compile
-                files, notes = {}, []
-                for rel in student_files(lab):
-                    found, note = find_student_file(folder, lab["name"], rel, [l["name"] for l in self.labs])
-                    if note:
-                        notes.append(note)
-                    if found is None:
-                        notes.append(f"labs/{lab['name']}/{rel} is not in the submission: the stub is graded")
-                    elif found.stat().st_size > MAX_FILE_BYTES:
-                        notes.append(f"labs/{lab['name']}/{rel} is over 1 MiB: the stub is graded")
-                    else:
-                        files[rel], added = fill_missing(self.ws.judge_bin / "wb_check", lab, rel, found.read_bytes())
-                        notes += added
-                found_files[lab["name"]] = (files, notes)
-                for rel, content in files.items():
-                    self.ws.place(lab["name"], rel, content)
+            found_files = {lab["name"]: self.take_files(lab, folder) for lab in self.labs}
             # Only the labs the submission touched are built and run (an untouched lab scores 0 unrun).
             touched = [lab for lab in self.labs if not self.untouched(lab, found_files[lab["name"]][0])]
             all_built, first_out = self.build(touched) if touched else (True, "")  # one build when all compile
@@ -365,43 +339,71 @@ class Grader:
                 broken = {}
                 if not all_built:  # (the first build was of this lab alone: it need not run twice)
                     broken = self.compile_lab(lab, files, first_out if touched == [lab] else None)
-                tests = self.list_tests(lab)
-                with concurrent.futures.ThreadPoolExecutor(self.test_jobs) as pool:  # one process each
-                    outcome, failed_uses = {}, {}
-                    pending = list(lab["exercises"])
-                    while pending:  # in "uses" order: an exercise after those whose results it takes
-                        wave = [e for e in pending if all(u in outcome for u in e.get("uses", []))] or pending
-                        for e in wave:
-                            failed_uses[e["id"]] = [u for u in e.get("uses", []) if u in outcome and not outcome[u][0]]
-                        futures = {e["id"]: pool.submit(self.grade_exercise, lab, e, tests, broken,
-                                                        failed_uses[e["id"]]) for e in wave}
-                        outcome.update({i: f.result() for i, f in futures.items()})
-                        pending = [e for e in pending if e["id"] not in outcome]
-                # A C++ exercise runs in the app with the student's other C++ exercises: when several
-                # fail, one may be failing because of another (a crash, a loop, a wrong light fit).
-                # Each is then graded again in the stub's file with only its own chunk.
-                cpp_ids = [e["id"] for e in lab["exercises"] if e["file"] == "exercise.cpp"]
-                failing = [i for i in cpp_ids if i in broken or not outcome[i][0]]
-                stub_cpp = (ROOT / "labs" / lab["name"] / "exercise.cpp").read_text() if cpp_ids else ""
-                mine_cpp = files.get("exercise.cpp", b"").decode(errors="replace")
-                failed = [e for e in lab["exercises"] if e["id"] in failing and e["id"] not in broken
-                          and runs_app(outcome[e["id"]]) and not hung_by_itself(outcome[e["id"]])
-                          and not left_as_stub(outcome[e["id"]], mine_cpp, stub_cpp, e["id"])]
-                if failed and len(failing) >= 2 and "exercise.cpp" in files:
-                    for e in failed:
-                        alone = self.grade_alone(lab, e, files["exercise.cpp"].decode(errors="replace"), tests,
-                                                 failed_uses[e["id"]])
-                        if alone is not None:
-                            outcome[e["id"]] = alone
-                for e in lab["exercises"]:
-                    ok, failures, kept, hidden_result, has_hidden = outcome[e["id"]]
-                    mb = self.printed.get(e["id"].replace(".", "_"))
-                    printed = [f"your tests printed {mb} MB while they ran: the grader kept the first and last "
-                               "512 KB of it and left the rest out (a print in a loop?)"] if mb is not None else []
-                    results.add(lab, e, ok, failures, kept, notes + printed, hidden_result=hidden_result,
-                                hidden=has_hidden, explained=self.explained.pop((lab["nn"], e["id"]), None))
+                self.grade_lab(results, lab, files, notes, broken)
             results.timing["tests"] = time.time() - t_tests
             results.timing.update(self.spent)
+
+    def take_files(self, lab, folder):
+        """(files, notes): the submission's exercise files of `lab`, placed in the runner's tree (every
+        lab's first: one parallel build for all when they compile), and what the student is told of them."""
+        files, notes = {}, []
+        for rel in student_files(lab):
+            found, note = find_student_file(folder, lab["name"], rel, [l["name"] for l in self.labs])
+            if note:
+                notes.append(note)
+            if found is None:
+                notes.append(f"labs/{lab['name']}/{rel} is not in the submission: the stub is graded")
+            elif found.stat().st_size > MAX_FILE_BYTES:
+                notes.append(f"labs/{lab['name']}/{rel} is over 1 MiB: the stub is graded")
+            else:
+                files[rel], added = fill_missing(self.ws.judge_bin / "wb_check", lab, rel, found.read_bytes())
+                notes += added
+        for rel, content in files.items():
+            self.ws.place(lab["name"], rel, content)
+        return files, notes
+
+    def grade_lab(self, results, lab, files, notes, broken):
+        """Every exercise of a built lab, in "uses" order (an exercise after those whose results it
+        takes), a process each at once; then, where several C++ exercises failed, those that may be
+        failing because of another graded again alone."""
+        tests = self.list_tests(lab)
+        with concurrent.futures.ThreadPoolExecutor(self.test_jobs) as pool:
+            outcome, failed_uses = {}, {}
+            pending = list(lab["exercises"])
+            while pending:
+                wave = [e for e in pending if all(u in outcome for u in e.get("uses", []))] or pending
+                for e in wave:
+                    failed_uses[e["id"]] = [u for u in e.get("uses", []) if u in outcome and not outcome[u][0]]
+                futures = {e["id"]: pool.submit(self.grade_exercise, lab, e, tests, broken,
+                                                failed_uses[e["id"]]) for e in wave}
+                outcome.update({i: f.result() for i, f in futures.items()})
+                pending = [e for e in pending if e["id"] not in outcome]
+        self.regrade_alone(lab, files, tests, broken, outcome, failed_uses)
+        for e in lab["exercises"]:
+            ok, failures, kept, hidden_result, has_hidden = outcome[e["id"]]
+            mb = self.printed.get(e["id"].replace(".", "_"))
+            printed = [f"your tests printed {mb} MB while they ran: the grader kept the first and last "
+                       "512 KB of it and left the rest out (a print in a loop?)"] if mb is not None else []
+            results.add(lab, e, ok, failures, kept, notes + printed, hidden_result=hidden_result,
+                        hidden=has_hidden, explained=self.explained.pop((lab["nn"], e["id"]), None))
+
+    def regrade_alone(self, lab, files, tests, broken, outcome, failed_uses):
+        """A C++ exercise runs in the app with the student's other C++ exercises: when several fail, one
+        may be failing because of another (a crash, a loop, a wrong light fit). Each is then graded
+        again in the stub's file with only its own chunk (`outcome` is updated)."""
+        cpp_ids = [e["id"] for e in lab["exercises"] if e["file"] == "exercise.cpp"]
+        failing = [i for i in cpp_ids if i in broken or not outcome[i][0]]
+        stub_cpp = (ROOT / "labs" / lab["name"] / "exercise.cpp").read_text() if cpp_ids else ""
+        mine_cpp = files.get("exercise.cpp", b"").decode(errors="replace")
+        failed = [e for e in lab["exercises"] if e["id"] in failing and e["id"] not in broken
+                  and runs_app(outcome[e["id"]]) and not hung_by_itself(outcome[e["id"]])
+                  and not left_as_stub(outcome[e["id"]], mine_cpp, stub_cpp, e["id"])]
+        if not failed or len(failing) < 2 or "exercise.cpp" not in files:
+            return
+        for e in failed:
+            alone = self.grade_alone(lab, e, mine_cpp, tests, failed_uses[e["id"]])
+            if alone is not None:
+                outcome[e["id"]] = alone
 
 
 UNTOUCHED = "NOT IMPLEMENTED: the lab's exercise files are the stubs as handed out"

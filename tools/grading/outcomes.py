@@ -1,31 +1,85 @@
 """How a run of student code ended, in the student's words, and the rules that read an exercise's
 outcome (what to grade again, alone): the grader's (grader.py) helpers that hold no state."""
 import json
+import os
 import re
 import shutil
 import signal
+import stat
 from pathlib import Path
 
 from .chunks import chunk
-from .sandbox import describe_limit
+from .sandbox import KEEP, describe_limit
 
 
-def runner_stopped(code, out, timed_out, timeout, cpu_seconds=0):
-    """[(test, message)] saying why a runner ended early (a time-out, a limit of the sandbox, a crash),
-    or []."""
-    running = re.findall(r"\[ RUN      \] (\S+)", out)
+class SupervisedRun:
+    """A runner's run under wb_check, as the grader reads it: why it stopped ([(test, message)], or []),
+    its output as shown (head and tail), MB it printed where that was a lot, and whether it ran out
+    of time."""
+
+    def __init__(self, stopped, output, printed_mb, timed_out):
+        self.stopped, self.output, self.printed_mb, self.timed_out = stopped, output, printed_mb, timed_out
+
+
+def tag_id(tag):
+    """The exercise of a run's tag: "01_H1_visible" -> "01.H1"."""
+    nn, ex = tag.split("_")[:2]
+    return f"{nn}.{ex}"
+
+
+def read_untrusted(path, keep=KEEP):
+    """(head and tail of the regular file at `path`, its size): a file the sandbox's user wrote, so no
+    link is followed, nothing but a regular file is opened (a FIFO would stop the grader), and at most
+    twice `keep` bytes are read. ("", 0) when there is none."""
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
+    except OSError:
+        return "", 0
+    with os.fdopen(fd, "rb") as f:
+        size = os.fstat(fd).st_size
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            return "", 0
+        if size <= 2 * keep:
+            return f.read(2 * keep).decode(errors="replace"), size
+        head = f.read(keep)
+        f.seek(size - keep)
+        return (head.decode(errors="replace") + f"\n[grader: cut here: {size - 2 * keep} bytes of output left out "
+                f"(the run printed {size >> 20} MB)]\n" + f.read(keep).decode(errors="replace")), size
+
+
+def signal_of(reason):
+    """-signal where a stop reason names one by its description ("crashed (CPU time limit exceeded)"), or 0."""
+    for sig in signal.Signals:
+        text = signal.strsignal(sig)
+        if text and f"({text}" in reason:
+            return -int(sig)
+    return 0
+
+
+def supervised_run(tape, ex_id, code, out, timed_out, timeout, cpu_seconds=0):
+    """What wb_check --runner left in `tape` (common/judge/supervisor.cpp words why a run stopped, for
+    check and the grader alike), with the sandbox's limits named where the run met one; `code`, `out`
+    and `timed_out`: the sandbox's run of wb_check itself, which only fails when wb_check could not
+    finish (its own limit is shorter)."""
+    tag = "Ex" + ex_id.replace(".", "_")
+    log, size = read_untrusted(tape / f"{tag}.log")
+    if not (tape / "all").is_symlink():
+        reasons = [line.partition("\t")[2] for line in read_untrusted(tape / "all" / "stopped.txt")[0].splitlines()
+                   if line.startswith(tag + "\t")]
+    else:
+        reasons = []
+    running = re.findall(r"\[ RUN      \] (\S+)", log)
     test = running[-1] if running else ""
     if timed_out:
-        return [(test, f"ERROR: timed out after {timeout} s (an endless loop in C++?); the process was killed")]
-    limit = describe_limit(code, out, cpu_seconds) if code < 0 or code > 128 else ""
-    if limit:
-        return [(test, f"ERROR: your code {limit}; the process was stopped in {test or 'start-up'}")]
-    if code < 0 or code > 128:
-        sig = -code if code < 0 else code - 128
-        name = signal.Signals(sig).name if sig in signal.Signals._value2member_map_ else f"exit {code}"
-        tail = "\n".join(out.strip().splitlines()[-8:])
-        return [(test, f"ERROR: the tests crashed ({name}) in {test or 'start-up'}:\n{tail}")]
-    return []
+        reasons = [f"{ex_id} timed out after {timeout} s and was stopped (an endless loop?)"]
+    elif not reasons and code != 0:
+        reasons = [f"{ex_id}'s run could not finish (exit {code}):\n" + "\n".join(out.strip().splitlines()[-8:])]
+    stopped = []
+    for reason in reasons[:1]:
+        limit = describe_limit(signal_of(reason), log + out, cpu_seconds)
+        stopped.append((test, f"ERROR: {reason}" + (f"\n(your code {limit})" if limit else "")))
+    printed = size >> 20 if size > 2 * KEEP else None
+    return SupervisedRun(stopped, log, printed, timed_out or any("timed out after" in r for r in reasons))
 
 
 # Where a run was cut short by the whole job's time limit (--time-limit), not by its own.

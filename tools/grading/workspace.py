@@ -14,8 +14,8 @@ from .submission import load_labs, student_files
 
 
 # The framework's static libraries and the tests' main in a build folder (cmake/Framework.cmake).
-FRAMEWORK_LIBRARIES = ("libglad.a", "common/libwb_common.a", "tests/harness/libwb_testing.a",
-                       "tests/harness/CMakeFiles/wb_testing_main.dir/main.cpp.o")
+FRAMEWORK_LIBRARIES = ("libglad.a", "common/libwb_common.a", "common/judge/libwb_testing.a",
+                       "common/judge/CMakeFiles/wb_testing_main.dir/main.cpp.o")
 FRAMEWORK_TARGETS = ["glad", "wb_common", "wb_testing", "wb_testing_main", "wb_check"]
 
 
@@ -169,11 +169,11 @@ class Workspace:
                                                                   r"[A-Z]+=(.*)$", cache, re.M)]
         self.framework.mkdir(parents=True, exist_ok=True)
         os.chmod(self.framework, 0o755)
-        for rel in FRAMEWORK_LIBRARIES:
+        for rel in FRAMEWORK_LIBRARIES + ("wb_check",):  # (wb_check: the runner's supervisor, as in check)
             src, dest = self.judge_bin / rel, self.framework / Path(rel).name
             if not dest.is_file() or dest.read_bytes() != src.read_bytes():
                 shutil.copyfile(src, dest)  # (a new time only when it changed: make relinks the labs)
-            os.chmod(dest, 0o644)
+            os.chmod(dest, 0o755 if rel == "wb_check" else 0o644)
         return flags
 
     def prepare_judge(self, jobs):
@@ -206,11 +206,12 @@ class Workspace:
         return {"ro": [self.src, self.framework], "rw": [self.build], "cwd": self.build}
 
     def runner_binds(self, tape, held_out):
-        """What a runner sees: the student edition, its build and the stub shaders, read only; its own
-        tape folder, writable; no other runner's tape, and a test-output/ of its own (empty, gone
-        when it ends) so nothing is written in common by a held-out run and a visible one."""
+        """What a runner sees: the student edition, its build, the stub shaders and the framework (whose
+        wb_check supervises it), read only; its own tape folder, writable; no other runner's tape, and a
+        test-output/ of its own (empty, gone when it ends) so nothing is written in common by a held-out
+        run and a visible one."""
         hide = [self.build / "tapes", self.build / "test-output"]
-        return {"ro": [self.src, self.build, self.stubs], "rw": [tape], "hide": hide}
+        return {"ro": [self.src, self.build, self.stubs, self.framework], "rw": [tape], "hide": hide}
 
     def fresh_outputs(self):
         """Empties the runners' folders, so nothing one submission's code left there meets the next:
@@ -247,14 +248,15 @@ def own(folder, uid, mode=0o700):
 def copy_tape(src, dest):
     """Copies a runner's tape for the judge: its regular files named as a tape's (no links, devices,
     folders or other files), up to MAX_TAPE_BYTES in all; what does not fit is left out, so the judge
-    finds no result there."""
+    finds no result there. `src` itself may be the student's (wb_check's all/): a link there is not
+    followed (it could point at another run's tape, a held-out one)."""
     shutil.rmtree(dest.parent, ignore_errors=True)
     dest.mkdir(parents=True)
     os.chmod(dest.parent, 0o700)
     total = 0
-    for entry in sorted(os.scandir(src), key=lambda e: e.name) if src.is_dir() else []:
+    for entry in sorted(os.scandir(src), key=lambda e: e.name) if src.is_dir() and not src.is_symlink() else []:
         if not entry.is_file(follow_symlinks=False) or not (entry.name == "tape.jsonl" or entry.name.startswith("file-")):
-            continue  # only the tape's own files (tests/harness/tape.cpp names them)
+            continue  # only the tape's own files (common/judge/tape.cpp names them)
         size = entry.stat(follow_symlinks=False).st_size
         if total + size > MAX_TAPE_BYTES:
             continue

@@ -1,7 +1,7 @@
 // Held-out tests of lab 01 (instructor-only: tests/hidden is never exported). The same exercises on a
 // scene students have not seen, so a solution tuned to the public scene does not pass by accident.
 // Their points and visibility: hidden.json beside this file.
-#include "tests/harness/harness.hpp"
+#include "common/judge/harness.hpp"
 
 namespace {
 const std::vector<std::string> kSun = wb::test::labArgs({"light.index=0"}, "hidden/heldout.json");

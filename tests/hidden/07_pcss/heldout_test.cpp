@@ -1,7 +1,7 @@
 // Held-out tests of lab 07 (instructor-only: tests/hidden is never exported). The same exercises on
 // a scene students have not seen: a steeper plank leaning the other way, under a larger light that is
 // off-centre. Their points and visibility: hidden.json beside this file.
-#include "tests/harness/harness.hpp"
+#include "common/judge/harness.hpp"
 
 namespace {
 const std::vector<std::string> kHeldOut = wb::test::labArgs({}, "hidden/heldout.json");

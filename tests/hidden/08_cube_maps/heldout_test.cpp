@@ -1,7 +1,7 @@
 // Held-out tests of lab 08 (instructor-only: tests/hidden is never exported). The same exercises in a
 // room students have not seen: a storeroom under a sloping ceiling, lit by a bulb off-centre near a
 // corner, with a ladder and a globe across the faces' edges. Points and visibility: hidden.json.
-#include "tests/harness/harness.hpp"
+#include "common/judge/harness.hpp"
 
 namespace {
 const std::vector<std::string> kHard = wb::test::labArgs({"cube.filter=hard"}, "hidden/heldout.json");

@@ -1,8 +1,8 @@
 // Held-out tests of lab 09 (instructor-only: tests/hidden is never exported). The same exercises in a
 // courtyard students have not seen: a directional light, an arch, a flat ring, an open sheet (open
 // edges), and a bookmark inside the arch's shadow. Points and visibility: hidden.json beside this file.
+#include "common/judge/harness.hpp"
 #include "exercise.hpp"
-#include "tests/harness/harness.hpp"
 
 #include <array>
 #include <iterator>

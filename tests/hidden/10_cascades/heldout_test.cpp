@@ -3,9 +3,9 @@
 // an orchard students have not seen (a sun from the other side, a shed, rows of trees, a line of
 // stakes along the view). The C++ calls go through WB_CALL_HELD_OUT: the runner, which does not hold
 // these tests, makes them from the judge's plan. Points and visibility: hidden.json beside this file.
+#include "common/judge/harness.hpp"
+#include "common/judge/hunt.hpp"
 #include "exercise.hpp"
-#include "tests/harness/harness.hpp"
-#include "tests/harness/hunt.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 

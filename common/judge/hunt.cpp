@@ -1,7 +1,7 @@
-#include "tests/harness/hunt.hpp"
+#include "common/judge/hunt.hpp"
 
 #include "common/base/strf.hpp"
-#include "tests/harness/harness.hpp"
+#include "common/judge/harness.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "tests/harness/reference_calls.hpp"
+#include "common/judge/reference_calls.hpp"
 
 #include "common/base/variant.hpp"
 #include "common/exercise/exercise_tape.hpp"

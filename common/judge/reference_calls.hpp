@@ -13,8 +13,8 @@
 
 namespace wb::test {
 
-/// The file of the reference's calls for a lab run with `args`: tests/golden/<lab>/calls/KEY.json,
-/// or tests/hidden/<lab>/calls/KEY.json for a held-out test or scene (never handed out). KEY names
+/// The file of the reference's calls for a lab run with `args`: tests/golden/LAB/calls/KEY.json,
+/// or tests/hidden/LAB/calls/KEY.json for a held-out test or scene (never handed out). KEY names
 /// the arguments that decide what the exercises are asked, not the files the run writes.
 std::filesystem::path referenceCallsFile(const std::vector<std::string>& args);
 

@@ -1,4 +1,4 @@
-#include "tests/harness/diagnosis.hpp"
+#include "common/judge/diagnosis.hpp"
 
 #include "common/platform/loop_guard.hpp"
 
@@ -169,7 +169,7 @@ Diagnosis diagnose(const std::string& test, const std::string& message) {
         d.details.push_back(hint.rfind("one of these:", 0) == 0 ? "looks like a known mistake, " + hint
                                                                 : "looks like a known mistake: " + hint);
   }
-  for (const auto& l : lines)  // the pictures a failing test left (tests/harness/picture.hpp)
+  for (const auto& l : lines)  // the pictures a failing test left (common/judge/picture.hpp)
     if (const auto at = l.find("picture: "); at != std::string::npos && l.find_first_not_of(' ') == at)
       d.details.push_back(l.substr(at));
   return d;

@@ -1,13 +1,16 @@
 // wb_check: `check` on every OS (supervisor.hpp). ./workbook check NN builds, then runs it; on
 // Windows, `cmake --build build --target check_NN` does both.
 //   wb_check NN [--root DIR] [--tests EXE] [--judge EXE] [--tape DIR] [--submission DIR] [--html FILE]
-//   wb_check --runner TESTS ID TAPE          one exercise's runner (the check's first half)
-//   wb_check --judge NN JUDGE TAPE SUBMISSION the judge (its second half)
+//   wb_check --runner TESTS ID TAPE [ARG...] one exercise's runner (the check's first half, and the
+//                                            grader's, in its sandbox: ARGs select its tests)
+//   wb_check --judge NN JUDGE TAPE SUBMISSION [ARG...]
+//                                            the judge (its second half; the grader's ARGs: its
+//                                            filter and report, in place of --check)
 //   wb_check --fill-missing FILE STUB NAME STUB_NAME check|grader
 //                                            an earlier edition's file: the exercises it lacks, from
 //                                            the stub (fillMissingChunks), one line each
 #include "common/exercise/exercise_chunks.hpp"
-#include "tests/harness/supervisor.hpp"
+#include "common/judge/supervisor.hpp"
 
 #include "common/platform/process.hpp"
 
@@ -27,8 +30,8 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: wb_check NN [--root DIR] [--tests EXE] [--judge EXE] [--tape DIR] [--submission DIR] [--html FILE]\n"
-    "       wb_check --runner TESTS ID TAPE\n"
-    "       wb_check --judge NN JUDGE TAPE SUBMISSION\n"
+    "       wb_check --runner TESTS ID TAPE [TEST_ARG...]\n"
+    "       wb_check --judge NN JUDGE TAPE SUBMISSION [JUDGE_ARG...]\n"
     "       wb_check --fill-missing FILE STUB NAME STUB_NAME check|grader\n";
 
 int usage(const std::string& why) {
@@ -127,15 +130,15 @@ int main(int argc, char** argv) {
   if (a.empty()) return usage("which lab?");
   const Limits limits = Limits::fromEnvironment();
   if (a[0] == "--runner") {
-    if (a.size() != 4) return usage("--runner takes TESTS ID TAPE");
-    fs::create_directories(fs::path(a[3]) / "all");
-    wb::check::runExerciseRunner(a[1], a[2], a[3], limits, "");
+    if (a.size() < 4) return usage("--runner takes TESTS ID TAPE [TEST_ARG...]");
+    const char* shaders = std::getenv("WB_RECORD_SHADERS");  // (the grader's: the stubs as handed out)
+    wb::check::runExerciseRunner(a[1], a[2], a[3], limits, shaders ? shaders : "", {a.begin() + 4, a.end()});
     return 0;
   }
   if (a[0] == "--fill-missing") return fillMissing(a);
   if (a[0] == "--judge") {
-    if (a.size() != 5) return usage("--judge takes NN JUDGE TAPE SUBMISSION");
-    return wb::check::runJudge(a[1], a[2], a[3], a[4], limits);
+    if (a.size() < 5) return usage("--judge takes NN JUDGE TAPE SUBMISSION [JUDGE_ARG...]");
+    return wb::check::runJudge(a[1], a[2], a[3], a[4], limits, {a.begin() + 5, a.end()});
   }
   if (a[0].size() != 2 || a[0].find_first_not_of("0123456789") != std::string::npos)
     return usage("expected a two-digit lab number such as 01, got '" + a[0] + "'");

@@ -1,12 +1,12 @@
-#include "tests/harness/check_table.hpp"
+#include "common/judge/check_table.hpp"
 
 #include "common/base/variant.hpp"
 #include "common/exercise/crash_report.hpp"
 #include "common/exercise/glsl_harness.hpp"
-#include "tests/harness/attribution.hpp"
-#include "tests/harness/check_page.hpp"
-#include "tests/harness/diagnosis.hpp"
-#include "tests/harness/harness.hpp"
+#include "common/judge/attribution.hpp"
+#include "common/judge/check_page.hpp"
+#include "common/judge/diagnosis.hpp"
+#include "common/judge/harness.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -14,13 +14,15 @@ namespace wb::test {
 
 /// An RGB colour.
 struct Rgb {
-  uint8_t r, g, b;
+  uint8_t r;  ///< red
+  uint8_t g;  ///< green
+  uint8_t b;  ///< blue
 };
 
 /// An RGB picture to draw on, written as PNG.
 class Canvas {
  public:
-  Canvas(int width, int height, Rgb fill);
+  Canvas(int width, int height, Rgb fill);  ///< a width x height picture filled with `fill`
   /// Copies an RGBA8 image of w x h with its top left corner at (x, y).
   void blit(int x, int y, int w, int h, const std::vector<uint8_t>& rgba);
   /// A line `thick` pixels wide.
@@ -46,8 +48,10 @@ void writeScenePanels(const std::filesystem::path& file, int w, int h, const std
 
 /// One case of a sweep: the input swept, your value, the reference's, and whether the case fails.
 struct SweepPoint {
-  double x, got, want;
-  bool failing;
+  double x;      ///< the input swept
+  double got;    ///< your value
+  double want;   ///< the reference's
+  bool failing;  ///< whether the case fails
 };
 
 /// A function test that sweeps one input, as a plot: the reference's values (grey), yours (blue),
@@ -59,7 +63,9 @@ std::string plotSweep(const std::string& name, const std::string& title, const s
 /// A function test's cases, read by index, of which some series sweep one input.
 struct SweepCases {
   size_t count;                                    ///< how many cases
-  std::function<double(size_t)> x, got, want;      ///< case i's swept input, your value, the reference's
+  std::function<double(size_t)> x;                 ///< case i's swept input
+  std::function<double(size_t)> got;               ///< case i's value, yours
+  std::function<double(size_t)> want;              ///< case i's value, the reference's
   std::function<bool(size_t)> failing;             ///< whether case i fails
   std::function<bool(size_t, size_t)> sameSeries;  ///< whether cases i and k differ in the swept input alone
 };

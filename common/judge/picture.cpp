@@ -1,8 +1,8 @@
-#include "tests/harness/picture.hpp"
+#include "common/judge/picture.hpp"
 
+#include "common/judge/harness.hpp"
 #include "common/platform/font.hpp"
 #include "common/platform/image.hpp"
-#include "tests/harness/harness.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -10,7 +10,7 @@
 /// nor failed, with no number. A stub shows its pattern, which a scene test names itself: only an
 /// exercise that is wrong or an error can be what spoils another's scene.
 #pragma once
-#include "tests/harness/diagnosis.hpp"
+#include "common/judge/diagnosis.hpp"
 
 #include <map>
 #include <set>

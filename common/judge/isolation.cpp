@@ -1,14 +1,14 @@
-#include "tests/harness/isolation.hpp"
+#include "common/judge/isolation.hpp"
 
 #include "common/base/variant.hpp"
 #include "common/exercise/exercise_chunks.hpp"
 #include "common/exercise/exercise_tape.hpp"
 #include "common/exercise/glsl_harness.hpp"
+#include "common/judge/harness.hpp"
+#include "common/judge/reference_calls.hpp"
+#include "common/judge/tape.hpp"
 #include "common/platform/process.hpp"
 #include "common/platform/shader.hpp"
-#include "tests/harness/harness.hpp"
-#include "tests/harness/reference_calls.hpp"
-#include "tests/harness/tape.hpp"
 
 #include <algorithm>
 #include <cstdlib>

@@ -1,4 +1,4 @@
-#include "tests/harness/tape.hpp"
+#include "common/judge/tape.hpp"
 
 #include "common/exercise/exercise_tape.hpp"
 

@@ -23,7 +23,7 @@ struct Diagnosis {
 Diagnosis diagnose(const std::string& test, const std::string& message);
 
 /// The hint of a known mistake whose recorded value for `test` is `got` (relative difference below
-/// 1e-3, or within `slack`), from tests/hints/<lab>.json; "" when none matches; "one of these:" and a
+/// 1e-3, or within `slack`), from tests/hints/LAB.json; "" when none matches; "one of these:" and a
 /// line per hint when several mistakes give that value. A scene's share of differing pixels gets the
 /// slack its own test allows between two renders of the same code ("allowed 0.500%"): the mistake's
 /// picture differs that much between one GL implementation and another, as a right one's does.

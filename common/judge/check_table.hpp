@@ -3,7 +3,7 @@
 /// test, one line per exercise (passes / NOT IMPLEMENTED / WRONG / ERROR / waiting / blocked), the
 /// hints a mutant proved, and the summary the grader's count agrees with.
 #pragma once
-#include "tests/harness/attribution.hpp"
+#include "common/judge/attribution.hpp"
 
 #include <gtest/gtest.h>
 

@@ -17,8 +17,8 @@
 #include "common/base/variant.hpp"
 #include "common/exercise/crash_report.hpp"
 #include "common/exercise/exercise_chunks.hpp"
-#include "tests/harness/check_table.hpp"
-#include "tests/harness/harness.hpp"
+#include "common/judge/check_table.hpp"
+#include "common/judge/harness.hpp"
 
 #include <cstdlib>
 #include <cstring>

@@ -110,6 +110,7 @@ constexpr size_t arity(R (*)(A...)) {
   return sizeof...(A);
 }
 
+/// Calls `fn` with `inputs` (a JSON array, one value per parameter) decoded, and encodes its result.
 template <class R, class... A, size_t... I>
 nlohmann::json callWithInputs(R (*fn)(A...), const nlohmann::json& inputs, std::index_sequence<I...>) {
   if (!inputs.is_array() || inputs.size() != sizeof...(A)) throw Error("malformed inputs of a requested call");
@@ -143,7 +144,9 @@ R observeCall(const char* name, R (*fn)(A...), const B&... args) {
       ::wb::test::registerCallable(#fn, [](const nlohmann::json& in) {                                  \
         return ::wb::test::callWithInputs(&fn, in, std::make_index_sequence<::wb::test::arity(&fn)>{}); \
       })
+/// Pastes two tokens (a unique name for each registration).
 #define WB_CALLABLE_CAT2(a, b) a##b
+/// Pastes two tokens after expanding them (`__LINE__`).
 #define WB_CALLABLE_CAT(a, b) WB_CALLABLE_CAT2(a, b)
 
 /// A held-out test's call of a WB_CALLABLE exercise: `m = WB_CALL_HELD_OUT(lab10::fitCascade, v, c, r)`.

@@ -1,10 +1,10 @@
-#include "tests/harness/attribution.hpp"
+#include "common/judge/attribution.hpp"
 
 #include "common/base/variant.hpp"
 #include "common/exercise/exercise_chunks.hpp"
 #include "common/exercise/glsl_harness.hpp"
+#include "common/judge/tape.hpp"
 #include "common/platform/shader.hpp"
-#include "tests/harness/tape.hpp"
 
 #include <algorithm>
 #include <regex>

@@ -1,4 +1,4 @@
-#include "tests/harness/supervisor.hpp"
+#include "common/judge/supervisor.hpp"
 
 #include "common/platform/process.hpp"
 
@@ -60,7 +60,7 @@ std::string stoppedReason(const ProcessResult& r, const std::string& id, const f
     if (const auto at = where.find(") in exercise"); at != std::string::npos)
       where = "In exercise" + where.substr(at + 13);
     return id + " timed out after " + std::to_string(limits.exerciseSeconds) + " s and was stopped: an endless loop? " +
-           (where.empty() ? "" : where + ". ") + "(WB_CHECK_TIMEOUT=S sets the limit)";
+           (where.empty() ? "" : where + ". ") + (limits.inSandbox ? "" : "(WB_CHECK_TIMEOUT=S sets the limit)");
   }
   if (r.end == ProcessResult::End::WroteTooMuch) {
     std::ofstream(log, std::ios::app | std::ios::binary)
@@ -85,24 +85,30 @@ Limits Limits::fromEnvironment() {
   l.exerciseSeconds = envInt("WB_CHECK_TIMEOUT", l.exerciseSeconds);
   l.judgeTestSeconds = envInt("WB_CHECK_JUDGE_TIMEOUT", l.judgeTestSeconds);
   l.logMegabytes = envInt("WB_CHECK_LOG_MB", l.logMegabytes);
+  l.inSandbox = envInt("WB_CHECK_IN_SANDBOX", 0) == 1;
   return l;
 }
 
 void requestStop() { g_stop = true; }
 
 void runExerciseRunner(const fs::path& tests, const std::string& id, const fs::path& tape, const Limits& limits,
-                       const std::string& recordShaders) {
+                       const std::string& recordShaders, const std::vector<std::string>& testArgs) {
   const std::string tag = "Ex" + std::regex_replace(id, std::regex("\\."), "_");
   const fs::path part = tape / tag, log = tape / (tag + ".log");
+  fs::create_directories(tape / "all");
   ProcessSpec spec;
-  spec.argv = {tests.string(), "--runner", part.string(), "--gtest_filter=*." + tag + "_*"};
-  // (a lab run a test starts gets a third of the exercise's time: a scene test may run a few)
-  spec.env = {{"WB_RUN_TIMEOUT", std::to_string(std::max(limits.exerciseSeconds / 3, 3))},
+  spec.argv = {tests.string(), "--runner", part.string()};
+  if (testArgs.empty()) spec.argv.push_back("--gtest_filter=*." + tag + "_*");
+  spec.argv.insert(spec.argv.end(), testArgs.begin(), testArgs.end());
+  // (a lab run a test starts gets a third of the exercise's time, a scene test may run a few; the
+  // grader's runs say their own)
+  const char* runLimit = std::getenv("WB_RUN_TIMEOUT");
+  spec.env = {{"WB_RUN_TIMEOUT", runLimit ? runLimit : std::to_string(std::max(limits.exerciseSeconds / 3, 3))},
               {"WB_RECORD_SHADERS", recordShaders}};
   spec.log = log;
   spec.timeoutSeconds = limits.exerciseSeconds;
   spec.maxWriteBytes = (long long)limits.logMegabytes * 1024 * 1024;
-  spec.newSession = true;  // (the runner and the lab runs its tests start: all stopped together)
+  spec.newSession = !limits.inSandbox;  // (the runner and the lab runs its tests start: all stopped together)
   Process runner(spec);
   std::ofstream(tape / "running.pid") << runner.id() << "\n";  // (./workbook check --watch stops its session)
   const ProcessResult r = supervise(runner, [] {});
@@ -110,24 +116,46 @@ void runExerciseRunner(const fs::path& tests, const std::string& id, const fs::p
   fs::remove(tape / "running.pid", ec);  // (ended: its id may be another process's soon, which no watch may stop)
   if (const std::string why = stoppedReason(r, id, log, limits); !why.empty())
     appendLine(tape / "all" / "stopped.txt", tag + "\t" + why);
-  if (fs::exists(part / "tape.jsonl"))
+  // Only regular files are read or written, never through a link: the runner's folder and all/ are the
+  // student's code's to change too, and a FIFO swapped in would stop this process at open.
+  const auto regular = [](const fs::path& p) {
+    std::error_code e;
+    return fs::symlink_status(p, e).type() == fs::file_type::regular;
+  };
+  const auto writable = [&](const fs::path& p) { return !fs::exists(fs::symlink_status(p, ec)) || regular(p); };
+  if (regular(part / "tape.jsonl") && writable(tape / "all" / "tape.jsonl"))
     std::ofstream(tape / "all" / "tape.jsonl", std::ios::app) << readAll(part / "tape.jsonl");
   for (const auto& f : fs::directory_iterator(part, ec))
-    if (f.path().filename().string().rfind("file-", 0) == 0)
+    if (f.path().filename().string().rfind("file-", 0) == 0 && regular(f.path()) &&
+        writable(tape / "all" / f.path().filename()))
       fs::copy_file(f.path(), tape / "all" / f.path().filename(), fs::copy_options::overwrite_existing, ec);
 }
 
 namespace {
 
+// `args` with the tests in `skip` (a:b:c) left out of its --gtest_filter, or one added that leaves them out.
+std::vector<std::string> withoutTests(std::vector<std::string> args, const std::string& skip) {
+  if (skip.empty()) return args;
+  const std::string flag = "--gtest_filter=";
+  for (std::string& a : args)
+    if (a.rfind(flag, 0) == 0) {
+      a += (a.find('-', flag.size()) == std::string::npos ? "-" : ":") + skip;
+      return args;
+    }
+  args.push_back(flag + "-" + skip);
+  return args;
+}
+
 // One run of the judge: its exit code, or 124 when the test in `progress` made no progress for
 // the judge's limit (the process is then stopped, with everything it started).
 int judgeOnce(const fs::path& judge, const fs::path& tape, const fs::path& submission, const Limits& limits,
-              const std::string& skip) {
+              const std::vector<std::string>& judgeArgs, const std::string& skip) {
   const fs::path progress = tape / "judging.txt";
   std::ofstream(progress, std::ios::trunc).close();
   ProcessSpec spec;
-  spec.argv = {judge.string(), "--judge", (tape / "all").string(), "--check"};
-  if (!skip.empty()) spec.argv.push_back("--gtest_filter=-" + skip);
+  spec.argv = {judge.string(), "--judge", (tape / "all").string()};
+  for (const std::string& a : withoutTests(judgeArgs.empty() ? std::vector<std::string>{"--check"} : judgeArgs, skip))
+    spec.argv.push_back(a);
   spec.env = {{"WB_SUBMISSION_DIR", fs::absolute(submission).string()},
               {"WB_RUN_TIMEOUT", std::to_string(std::max(limits.exerciseSeconds, 8))},
               {"WB_PROGRESS_FILE", progress.string()}};
@@ -154,10 +182,10 @@ int judgeOnce(const fs::path& judge, const fs::path& tape, const fs::path& submi
 }  // namespace
 
 int runJudge(const std::string& nn, const fs::path& judge, const fs::path& tape, const fs::path& submission,
-             const Limits& limits) {
+             const Limits& limits, const std::vector<std::string>& judgeArgs) {
   std::string skip;
   for (int tries = 0; tries < 8 && !g_stop; ++tries) {
-    const int rc = judgeOnce(judge, tape, submission, limits, skip);
+    const int rc = judgeOnce(judge, tape, submission, limits, judgeArgs, skip);
     if (rc != 124 || g_stop) return rc;
     std::string test;
     std::getline(std::ifstream(tape / "judging.txt") >> std::ws, test);

@@ -4,8 +4,8 @@
 #pragma once
 #include "common/base/error.hpp"
 #include "common/exercise/glsl_harness.hpp"
+#include "common/judge/tape.hpp"
 #include "common/platform/image.hpp"
-#include "tests/harness/tape.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
@@ -44,8 +44,10 @@ std::vector<glm::vec4> runExercise(const std::string& id, const std::string& bod
 struct SlowShader : wb::Error {
   using wb::Error::Error;
 };
-/// How much longer than the reference a kernel may run, and the time below which it never counts.
-constexpr double kSlowShaderFactor = 20.0, kSlowShaderFloorMs = 2.0;
+/// How much longer than the reference a kernel may run.
+constexpr double kSlowShaderFactor = 20.0;
+/// The time (ms) below which a kernel never counts as slow.
+constexpr double kSlowShaderFloorMs = 2.0;
 
 /// While it lives, this process's shaders (wb::Program, wb::shaderSearchPath) are exercise `id`'s
 /// isolated GLSL: the submission's chunk of `id` and the solution's other chunks, in every GLSL
@@ -53,7 +55,7 @@ constexpr double kSlowShaderFactor = 20.0, kSlowShaderFloorMs = 2.0;
 /// For tests that build the lab's own programs in the test process. `text(file)` is what was written.
 class IsolatedShaders {
  public:
-  explicit IsolatedShaders(const std::string& id);
+  explicit IsolatedShaders(const std::string& id);  ///< isolates exercise `id` until destroyed
   ~IsolatedShaders();
   IsolatedShaders(const IsolatedShaders&) = delete;
   IsolatedShaders& operator=(const IsolatedShaders&) = delete;
@@ -89,8 +91,8 @@ class IsolatedShaders {
   }                                                 \
   if (::wb::anyTodo(results)) FAIL() << "NOT IMPLEMENTED: the GLSL function still returns WB_TODO";
 
-/// Lab arguments for a scene test: `--set` for each "key=value", and `--scene scenes/<scene>` when given
-/// (a held-out scene, "hidden/NAME.json", is read from the instructor-only tests/hidden/<lab>/scenes).
+/// Lab arguments for a scene test: `--set` for each "key=value", and `--scene scenes/SCENE` when given
+/// (a held-out scene, "hidden/NAME.json", is read from the instructor-only tests/hidden/LAB/scenes).
 std::vector<std::string> labArgs(const std::vector<std::string>& settings, const std::string& scene = "");
 
 /// A runner's answer to a judge's plan (held-out tests, which are not in the runner): records each
@@ -131,8 +133,8 @@ SceneMetrics measureScene(const std::string& id, const std::string& name, const 
 double penumbraGrowthRatio(const SceneMetrics& m);
 
 /// Layer 2: renders a golden case with the lab itself (`--headless --size 256x256` plus `args`),
-/// with exercise `id` isolated, and compares its visibility with tests/golden/<lab>/<name>.pfm (a
-/// held-out case, `name` = "hidden/NAME", with tests/hidden/<lab>/golden/NAME.pfm).
+/// with exercise `id` isolated, and compares its visibility with tests/golden/LAB/NAME.pfm (a
+/// held-out case, `name` = "hidden/NAME", with tests/hidden/LAB/golden/NAME.pfm).
 /// A pixel fails when no reference pixel in its 3x3 neighbourhood is within `tolerance`; the test fails when more than
 /// `maxFailingFraction` of pixels fail. On failure it writes reference, result and diff PNGs.
 void expectSceneMatchesGolden(const std::string& id, const std::string& name, const std::vector<std::string>& args,

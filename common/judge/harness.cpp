@@ -1,17 +1,17 @@
-#include "tests/harness/harness.hpp"
+#include "common/judge/harness.hpp"
 
 #include "common/base/variant.hpp"
 #include "common/exercise/exercise_chunks.hpp"
 #include "common/exercise/exercise_tape.hpp"
 #include "common/exercise/glsl_harness.hpp"
 #include "common/exercise/run_record.hpp"
+#include "common/judge/isolation.hpp"
+#include "common/judge/picture.hpp"
+#include "common/judge/reference_calls.hpp"
+#include "common/judge/tape.hpp"
 #include "common/platform/context.hpp"
 #include "common/platform/process.hpp"
 #include "common/platform/shader.hpp"
-#include "tests/harness/isolation.hpp"
-#include "tests/harness/picture.hpp"
-#include "tests/harness/reference_calls.hpp"
-#include "tests/harness/tape.hpp"
 
 #include <algorithm>
 #include <cstdlib>

@@ -1,4 +1,4 @@
-#include "tests/harness/check_page.hpp"
+#include "common/judge/check_page.hpp"
 
 #include "common/base/variant.hpp"
 

@@ -11,7 +11,10 @@ namespace wb::test {
 
 /// One exercise's row of the check's table.
 struct PageRow {
-  std::string id, status, title, headline;
+  std::string id;                    ///< the exercise, "01.2"
+  std::string status;                ///< passes, wrong, error, not implemented...
+  std::string title;                 ///< the exercise's title
+  std::string headline;              ///< the verdict's first line
   std::vector<std::string> details;  ///< lines below the headline; "picture: PATH (caption)" shows PATH
   std::string where;                 ///< "labs/NN/file:line" of a wrong exercise, or ""
 };
