@@ -152,6 +152,57 @@ std::string Measurement::areaText(const MeasureInput& in, const Light& light, co
   return text;
 }
 
+namespace {
+
+// The first lines of a measurement: acne, leak, gap, light in shadows, area and time, after a warning
+// when the frame shows a stub's pattern.
+std::string headline(const MeasureResult& r, int pixels) {
+  const VisibilityMetrics& m = r.metrics;
+  const std::string todo =
+      r.todoPixels <= 0
+          ? ""
+          : strf(
+                "NOT MEASURED: %ld of %d pixels show the not-implemented pattern (an exercise this frame needs "
+                "is unfinished); the numbers below count them as shadowed and say nothing yet\n",
+                r.todoPixels, pixels);
+  return todo + strf(
+                    "acne rate %.2f%% (%ld of %ld lit pixels drawn shadowed)\nlight leak %.2f%% (%ld of %ld shadowed "
+                    "pixels drawn lit)\ncontact gap %s\nlight in shadows %.2f%% (mean visibility where the light "
+                    "is blocked)\nshadow area %.1f%% of the exact one; acne + leak %.2f%% beyond %d px of its edges\n"
+                    "(measured in %.0f ms, the ray casting included)",
+                    100 * m.acneRate(), m.acnePixels, m.litPixels, 100 * m.leakRate(), m.leakPixels, m.shadowedPixels,
+                    r.gapTexels < 0 ? "n/a" : strf("%.1f texels", r.gapTexels).c_str(), 100 * m.meanShadowLight(),
+                    100 * m.areaRatio(), 100 * m.wrongOutsideRimRate(), kRimPixels, r.milliseconds);
+}
+
+}  // namespace
+
+std::string Measurement::pcfText(const MeasureInput& in, const FloatImage& rendered, const std::string& why,
+                                 MeasureResult& r) {
+  const auto* ref = pcfReference(in, in.split() ? 1 : 0);
+  if (!ref) return "against PCF: n/a (" + (why.empty() ? std::string("map sizes differ") : why) + ")";
+  r.reference = compareWithReference(rendered, *ref, 0, rendered.width);
+  return strf(
+      "against PCF over the same footprint (%s)%s: |difference| %.2f%%,\n  lighter by > 0.1 on "
+      "%.2f%%, darker on %.2f%% of light-facing pixels",
+      footprint(in.split() ? in.sides[1] : in.light).c_str(), in.split() ? ", whole frame" : "",
+      100 * r.reference.meanAbs(), 100 * r.reference.lighterRate(), 100 * r.reference.darkerRate());
+}
+
+std::string Measurement::seamsText(const MeasureInput& in, const Light& light, const FloatImage& rendered,
+                                   const std::vector<glm::vec4>& positions, MeasureResult& r) {
+  if (in.light.target != GL_TEXTURE_CUBE_MAP) return "";
+  // The same lookups with rays: what differs is the map's doing, not the filter's.
+  const FloatImage same = filteredPointVisibility(*rays_, light.position, rendered.width, rendered.height, positions,
+                                                  in.light.cubeOffsets, in.light.cubeBias);
+  r.seams = cubeSeamError(rendered, same, positions, light.position, kSeamDegrees);
+  return strf(
+      "\nagainst the same %zu lookup%s with rays: |difference| %.2f%% within %.0f degrees of a cube "
+      "face's edge (%ld pixels), %.2f%% elsewhere",
+      std::max<size_t>(1, in.light.cubeOffsets.size()), in.light.cubeOffsets.size() > 1 ? "s" : "",
+      100 * r.seams.seam.meanAbs(), kSeamDegrees, r.seams.seam.pixels, 100 * r.seams.rest.meanAbs());
+}
+
 MeasureResult Measurement::measure(const MeasureInput& in) {
   const auto t0 = std::chrono::steady_clock::now();
   const int w = in.target.size().x, h = in.target.size().y;
@@ -176,28 +227,9 @@ MeasureResult Measurement::measure(const MeasureInput& in) {
                                    texelWorldSize(in.light.viewProj[0], in.light.size));
   else
     r.notes = "contact gap and PCF reference: n/a (" + why + ")";
-  std::string pcfText = "against PCF: n/a (" + (why.empty() ? std::string("map sizes differ") : why) + ")";
-  if (const auto* ref = pcfReference(in, in.split() ? 1 : 0)) {
-    r.reference = compareWithReference(rendered, *ref, 0, w);
-    pcfText = strf(
-        "against PCF over the same footprint (%s)%s: |difference| %.2f%%,\n  lighter by > 0.1 on "
-        "%.2f%%, darker on %.2f%% of light-facing pixels",
-        footprint(in.split() ? in.sides[1] : in.light).c_str(), in.split() ? ", whole frame" : "",
-        100 * r.reference.meanAbs(), 100 * r.reference.lighterRate(), 100 * r.reference.darkerRate());
-  }
+  const std::string pcf = pcfText(in, rendered, why, r);
   const std::string split = in.split() ? halves(in, rendered, exact, r, positions) : "";
-  std::string seams;
-  if (in.light.target == GL_TEXTURE_CUBE_MAP) {
-    // The same lookups with rays: what differs is the map's doing, not the filter's.
-    const FloatImage same =
-        filteredPointVisibility(*rays_, light.position, w, h, positions, in.light.cubeOffsets, in.light.cubeBias);
-    r.seams = cubeSeamError(rendered, same, positions, light.position, kSeamDegrees);
-    seams = strf(
-        "\nagainst the same %zu lookup%s with rays: |difference| %.2f%% within %.0f degrees of a cube "
-        "face's edge (%ld pixels), %.2f%% elsewhere",
-        std::max<size_t>(1, in.light.cubeOffsets.size()), in.light.cubeOffsets.size() > 1 ? "s" : "",
-        100 * r.seams.seam.meanAbs(), kSeamDegrees, r.seams.seam.pixels, 100 * r.seams.rest.meanAbs());
-  }
+  const std::string seams = seamsText(in, light, rendered, positions, r);
   std::string area = areaText(in, light, rendered, exact, positions, r);
   if (!area.empty())
     area =
@@ -205,22 +237,7 @@ MeasureResult Measurement::measure(const MeasureInput& in) {
         "area light below is the truth)" +
         area;
   r.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  const VisibilityMetrics& m = r.metrics;
-  r.text = strf(
-               "acne rate %.2f%% (%ld of %ld lit pixels drawn shadowed)\nlight leak %.2f%% (%ld of %ld shadowed "
-               "pixels drawn lit)\ncontact gap %s\nlight in shadows %.2f%% (mean visibility where the light "
-               "is blocked)\nshadow area %.1f%% of the exact one; acne + leak %.2f%% beyond %d px of its edges\n"
-               "(measured in %.0f ms, the ray casting included)",
-               100 * m.acneRate(), m.acnePixels, m.litPixels, 100 * m.leakRate(), m.leakPixels, m.shadowedPixels,
-               r.gapTexels < 0 ? "n/a" : strf("%.1f texels", r.gapTexels).c_str(), 100 * m.meanShadowLight(),
-               100 * m.areaRatio(), 100 * m.wrongOutsideRimRate(), kRimPixels, r.milliseconds) +
-           "\n" + pcfText + seams + split + area;
-  if (r.todoPixels > 0)
-    r.text = strf(
-                 "NOT MEASURED: %ld of %d pixels show the not-implemented pattern (an exercise this frame needs "
-                 "is unfinished); the numbers below count them as shadowed and say nothing yet\n",
-                 r.todoPixels, w * h) +
-             r.text;
+  r.text = headline(r, w * h) + "\n" + pcf + seams + split + area;
   r.heatmap = artifactHeatmap(rendered, exact, positions);
   return r;
 }

@@ -81,6 +81,9 @@ class Measurement {
                      const std::vector<glm::vec4>& positions);
   std::string areaText(const MeasureInput& in, const Light& light, const FloatImage& rendered, const FloatImage& exact,
                        const std::vector<glm::vec4>& positions, MeasureResult& r);
+  std::string pcfText(const MeasureInput& in, const FloatImage& rendered, const std::string& why, MeasureResult& r);
+  std::string seamsText(const MeasureInput& in, const Light& light, const FloatImage& rendered,
+                        const std::vector<glm::vec4>& positions, MeasureResult& r);
   std::unique_ptr<RayScene> rays_;
   const Scene* raysScene_ = nullptr;
   float raysCutoff_ = -1;

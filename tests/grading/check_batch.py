@@ -26,7 +26,8 @@ reasons = {"compile_error": "does not compile", "segfault": "SIGSEGV", "endless_
            "glsl_include_relative": "is not allowed", "glsl_include_deeper": "is not allowed",
            "glsl_include_absolute": "is not allowed", "link_error": "undefined reference to",
            "glsl_endless_same": ("longer than the reference", "timed out"),
-           "flood": "the grader kept the first and last 512 KB"}
+           "flood": "the grader kept the first and last 512 KB",
+           "supervisor_kill": "its supervisor (wb_check) was stopped"}
 root = Path(__file__).resolve().parent.parent.parent
 
 rows = {r["student"]: r for r in csv.DictReader(open(grades / "gradebook.csv"))}

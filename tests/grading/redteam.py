@@ -30,6 +30,10 @@ tests/grading/run_weak_class.sh grades with bubblewrap and unshare turned off (W
   results_daemon         the stubs, with a daemon (a session of its own, so a session's kill misses
                          it) that rewrites every tape and results.json it can reach for a minute: it
                          is killed when its run ends, so zero, and nothing forged is read
+  supervisor_kill        full, with a runner that kills its supervisor (wb_check --runner, its parent)
+                         at start-up, so that nothing joins its tape or says why it ended: grading goes
+                         on, and every exercise of that lab is lost, as for a crash at start-up (every
+                         runner of the lab does it), with the reason named
   fifo_tape              full, with a runner that swaps its tape for a FIFO as it exits, which would
                          stop a grader that opened it: grading goes on, and that lab's C++
                          exercises are lost (no record; the GLSL ones the judge runs itself)
@@ -237,6 +241,20 @@ const int forged = [] {
 }  // namespace
 """
 
+SUPERVISOR_KILL = r"""
+#include <signal.h>
+#include <unistd.h>
+#include <string>
+namespace {
+// In the runner (the test binary) only: its parent, the supervisor that joins its tape and words why
+// it ended, is killed before any test runs.
+const int killedSupervisor = [] {
+  if (std::string(program_invocation_short_name).find("_tests") == std::string::npos) return 0;
+  return kill(getppid(), SIGKILL);
+}();
+}  // namespace
+"""
+
 FIFO_TAPE = r"""
 #include <sys/stat.h>
 #include <unistd.h>
@@ -273,3 +291,5 @@ def weak_sandbox_cheats(out, full, stubs_of, expect, cpp, the_labs):
     expect("results_daemon", everything)
     st.prepend(full("fifo_tape"), lab, e_cpp["file"], FIFO_TAPE)
     expect("fifo_tape", cpp_ids)
+    st.prepend(full("supervisor_kill"), lab, e_cpp["file"], SUPERVISOR_KILL)
+    expect("supervisor_kill", [e["id"] for e in dict(the_labs)[lab]])

@@ -73,7 +73,8 @@ def supervised_run(tape, ex_id, code, out, timed_out, timeout, cpu_seconds=0):
     if timed_out:
         reasons = [f"{ex_id} timed out after {timeout} s and was stopped (an endless loop?)"]
     elif not reasons and code != 0:
-        reasons = [f"{ex_id}'s run could not finish (exit {code}):\n" + "\n".join(out.strip().splitlines()[-8:])]
+        reasons = [f"{ex_id}'s run did not finish: its supervisor (wb_check) was stopped (exit {code}). Did your "
+                   "code stop its parent process?\n" + "\n".join(out.strip().splitlines()[-8:])]
     stopped = []
     for reason in reasons[:1]:
         limit = describe_limit(signal_of(reason), log + out, cpu_seconds)
