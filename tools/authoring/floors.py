@@ -17,6 +17,8 @@ import shutil
 import sys
 import tempfile
 
+import drawn_from_code
+
 INCLUDE = re.compile(r'^\s*#\s*include\s+"common/([^"]+)"', re.M)
 SYSTEM = re.compile(r'^\s*#\s*include\s+<([^>]+)>', re.M)
 # Libraries a floor must not reach (its README says why): base knows nothing of rendering, and only
@@ -235,29 +237,7 @@ def svg(root):
 
 
 def main(argv):
-    args = argv[1:]
-    if args[:1] == ["--self-test"]:
-        return self_test(pathlib.Path(args[1] if len(args) > 1 else pathlib.Path(__file__).parents[2]))
-    if args[:1] in (["--svg"], ["--check-svg"]):
-        if len(args) < 2:
-            print(__doc__, file=sys.stderr)
-            return 2
-        root = pathlib.Path(args[2] if len(args) > 2 else pathlib.Path(__file__).parents[2])
-        drawn, target = svg(root), pathlib.Path(args[1])
-        if args[0] == "--svg":
-            target.parent.mkdir(parents=True, exist_ok=True)
-            target.write_text(drawn)
-            print(f"floors: wrote {target}")
-            return 0
-        if not target.exists() or target.read_text() != drawn:
-            print(f"floors: {target} is not what the code draws now; run tools/authoring/floors.py --svg {target}")
-            return 1
-        print(f"floors: {target} is up to date")
-        return 0
-    if args and args[0].startswith("-"):
-        print(__doc__, file=sys.stderr)
-        return 2
-    return check(pathlib.Path(args[0] if args else pathlib.Path(__file__).parents[2]))
+    return drawn_from_code.main(argv, "floors", __doc__, check, self_test, svg)
 
 
 if __name__ == "__main__":

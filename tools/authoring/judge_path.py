@@ -16,6 +16,8 @@ import shutil
 import sys
 import tempfile
 
+import drawn_from_code
+
 # The programs and entry points, by column (left to right) and row.
 NODES = {
     "workbook": (0, 0, "./workbook check NN", "Linux, macOS: builds, then runs wb_check"),
@@ -224,30 +226,7 @@ def svg(root):
 
 
 def main(argv):
-    args = argv[1:]
-    default = pathlib.Path(__file__).resolve().parents[2]
-    if args[:1] == ["--self-test"]:
-        return self_test(pathlib.Path(args[1]) if len(args) > 1 else default)
-    if args[:1] in (["--svg"], ["--check-svg"]):
-        if len(args) < 2:
-            print(__doc__, file=sys.stderr)
-            return 2
-        root = pathlib.Path(args[2]) if len(args) > 2 else default
-        drawn, target = svg(root), pathlib.Path(args[1])
-        if args[0] == "--svg":
-            target.parent.mkdir(parents=True, exist_ok=True)
-            target.write_text(drawn)
-            print(f"judge path: wrote {target}")
-            return 0
-        if not target.exists() or target.read_text() != drawn:
-            print(f"judge path: {target} is not what the code draws now; run tools/authoring/judge_path.py --svg {target}")
-            return 1
-        print(f"judge path: {target} is up to date")
-        return 0
-    if args and args[0].startswith("-"):
-        print(__doc__, file=sys.stderr)
-        return 2
-    return check(pathlib.Path(args[0]) if args else default)
+    return drawn_from_code.main(argv, "judge path", __doc__, check, self_test, svg)
 
 
 if __name__ == "__main__":
