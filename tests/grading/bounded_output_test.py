@@ -17,7 +17,7 @@ from pathlib import Path
 
 import shutil
 
-from grading.outcomes import supervised_run
+from grading.outcomes import copy_images, supervised_run
 from grading.workspace import copy_tape
 from grading.sandbox import KEEP, run_killable
 
@@ -54,6 +54,23 @@ with tempfile.TemporaryDirectory() as tmp:
     ran = supervised_run(tape, "01.1", 0, "", False, 60)
     check(ran.timed_out and ran.stopped == [("GlTest.Ex01_1_First", "ERROR: 01.1 timed out after 4 s and was stopped: "
                                             "an endless loop?")], f"wb_check's words are the student's: {ran.stopped}")
+    # A held-out run quotes nothing of it: not the reason, not the test's name (either could carry the
+    # held-out inputs), only that it stopped, and whether at its time limit.
+    (tape / "all" / "stopped.txt").write_text("Ex01_1\t01.1 timed out after 4 s SECRET-INPUT-0.25\n")
+    (tape / "Ex01_1.log").write_text("[ RUN      ] SECRET-INPUT-0.5\n")
+    ran = supervised_run(tape, "01.1", 0, "", False, 60, held_out=True)
+    check(len(ran.stopped) == 1 and "SECRET" not in repr(ran.stopped) + ran.output and "time limit" in ran.stopped[0][1],
+          f"a held-out run's stop quotes nothing: {ran.stopped}")
+    # A picture is copied for the report only from the judge's own output, never through a link or
+    # from a path the student's code printed.
+    judged_out = tape / "judge-output"
+    judged_out.mkdir()
+    (judged_out / "mine.png").write_bytes(b"png")
+    (tape / "stolen.png").symlink_to("/etc/passwd")
+    (judged_out / "linked.png").symlink_to("/etc/passwd")
+    kept = copy_images([("t", f"picture: {tape / 'stolen.png'} picture: {judged_out / 'linked.png'} "
+                              f"picture: {judged_out / 'mine.png'}")], tape / "images", "01_1", judged_out)
+    check([k[2] for k in kept] == ["01_1_judge-output_mine.png"], f"only the judge's own picture is copied: {kept}")
     (tape / "Ex01_1.log").unlink()
     os.mkfifo(tape / "Ex01_1.log")
     (tape / "all" / "stopped.txt").unlink()

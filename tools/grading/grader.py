@@ -163,20 +163,20 @@ class Grader:
         what = ["--requests", str(self.plan(lab, judge, gfilter, judged, jenv, tape, uid))] if held_out \
             else [f"--gtest_filter={gfilter}"]
         binds = self.ws.runner_binds(tape, held_out)
-        t0, seconds = time.time(), self.limit(self.timeout)
+        t0, seconds, outer = time.time(), self.limit(self.timeout), self.limit(self.timeout + 10)
         # The runner runs under wb_check, check's own supervisor (common/judge/supervisor.hpp): the
         # same limit, cap on output and words for a run that was stopped, in check and here. The
-        # sandbox's own time limit, a little longer, only catches wb_check itself.
+        # sandbox's own time limit, a little longer (within the job's), only catches wb_check itself.
+        # A lab run a test starts may take the exercise's whole time, as before (WB_RUN_TIMEOUT).
         check = [str(self.ws.framework / "wb_check"), "--runner", str(runner), tag_id(tag), str(tape)]
-        code, out, timed_out = self.sandbox.run(
-            check + what, seconds + 10, env=dict(env, WB_CHECK_TIMEOUT=str(seconds), WB_CHECK_IN_SANDBOX="1"),
-            cwd=tape, uid=uid, **binds)
+        limits = {"WB_CHECK_TIMEOUT": str(seconds), "WB_CHECK_IN_SANDBOX": "1", "WB_RUN_TIMEOUT": str(seconds)}
+        code, out, timed_out = self.sandbox.run(check + what, outer, env=dict(env, **limits), cwd=tape, uid=uid,
+                                                **binds)
         self.count("runner", t0)
-        ran = supervised_run(tape, tag_id(tag), code, out, timed_out, seconds + 10, self.sandbox.cpu_seconds)
+        ran = supervised_run(tape, tag_id(tag), code, out, timed_out, seconds, self.sandbox.cpu_seconds, held_out)
         if held_out:  # the held-out inputs go as soon as they are used, and nothing of them is quoted
             shutil.rmtree(tape / "inputs", ignore_errors=True)
             (tape / "requests.jsonl").unlink(missing_ok=True)
-            ran.output = ""
         stopped = ran.stopped  # (shown first)
         if stopped and seconds < self.timeout and ran.timed_out:  # (not this exercise's time limit: the job's)
             stopped = [(test, f"ERROR: not finished at the time limit of the whole job ({CUT_SHORT})")
@@ -252,7 +252,8 @@ class Grader:
         elif has_hidden:
             hidden_result = self.run_tests(lab, f"Hidden*.Ex{tag}_*", f"{tag}_hidden", held_out=True,
                                            replay_uses=replay_uses)
-        kept = copy_images(failures + (hidden_result[1] if hidden_result else []), self.images, tag)
+        kept = copy_images(failures + (hidden_result[1] if hidden_result else []), self.images, tag,
+                           self.ws.judge_bin / "test-output")
         return ok, failures, kept, hidden_result, has_hidden
 
     def grade_alone(self, lab, e, mine, tests, replay_uses=()):

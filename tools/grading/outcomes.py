@@ -56,31 +56,45 @@ def signal_of(reason):
     return 0
 
 
-def supervised_run(tape, ex_id, code, out, timed_out, timeout, cpu_seconds=0):
+def supervised_run(tape, ex_id, code, out, timed_out, timeout, cpu_seconds=0, held_out=False):
     """What wb_check --runner left in `tape` (common/judge/supervisor.cpp words why a run stopped, for
     check and the grader alike), with the sandbox's limits named where the run met one; `code`, `out`
     and `timed_out`: the sandbox's run of wb_check itself, which only fails when wb_check could not
-    finish (its own limit is shorter)."""
+    finish (its own limit is shorter). All of it is the student's code's to write: each line is
+    bounded, and of a held-out run (`held_out`) nothing is quoted, not even a test's name, since it
+    could carry the held-out inputs; only that it stopped, and whether at its time limit."""
     tag = "Ex" + ex_id.replace(".", "_")
     log, size = read_untrusted(tape / f"{tag}.log")
+    reasons = []
     if not (tape / "all").is_symlink():
-        reasons = [line.partition("\t")[2] for line in read_untrusted(tape / "all" / "stopped.txt")[0].splitlines()
-                   if line.startswith(tag + "\t")]
-    else:
-        reasons = []
-    running = re.findall(r"\[ RUN      \] (\S+)", log)
+        reasons = [line.partition("\t")[2][:2000] for line in
+                   read_untrusted(tape / "all" / "stopped.txt")[0].splitlines() if line.startswith(tag + "\t")]
+    running = re.findall(r"\[ RUN      \] (\S{1,200})", log)
     test = running[-1] if running else ""
     if timed_out:
         reasons = [f"{ex_id} timed out after {timeout} s and was stopped (an endless loop?)"]
+    elif not reasons and (code < 0 or code > 128):
+        reasons = [f"{ex_id}'s run did not finish: its supervisor (wb_check) was stopped ({signal_name(code)}). Did "
+                   "your code stop its parent process?"]
     elif not reasons and code != 0:
-        reasons = [f"{ex_id}'s run did not finish: its supervisor (wb_check) was stopped (exit {code}). Did your "
-                   "code stop its parent process?\n" + "\n".join(out.strip().splitlines()[-8:])]
+        raise RuntimeError(f"the runner's supervisor could not start or run (exit {code}): a fault of the grader, "
+                           f"not of the submission: tell the instructor\n{out[-1000:]}")
+    timed = timed_out or any("timed out after" in r for r in reasons)
+    if held_out:
+        stopped = [("", f"ERROR: the held-out run of {ex_id} " + ("ran past its time limit" if timed else "crashed or "
+                   "was stopped") + " (held-out runs quote nothing of what they printed)")] if reasons else []
+        return SupervisedRun(stopped, "", None, timed)
     stopped = []
     for reason in reasons[:1]:
         limit = describe_limit(signal_of(reason), log + out, cpu_seconds)
         stopped.append((test, f"ERROR: {reason}" + (f"\n(your code {limit})" if limit else "")))
     printed = size >> 20 if size > 2 * KEEP else None
-    return SupervisedRun(stopped, log, printed, timed_out or any("timed out after" in r for r in reasons))
+    return SupervisedRun(stopped, log, printed, timed)
+
+
+def signal_name(code):
+    sig = -code if code < 0 else code - 128
+    return signal.Signals(sig).name if sig in signal.Signals._value2member_map_ else f"exit {code}"
 
 
 # Where a run was cut short by the whole job's time limit (--time-limit), not by its own.
@@ -130,12 +144,19 @@ def left_as_stub(outcome, mine, stub, ex_id):
     return at is not None and at_stub is not None and mine[at[0]:at[1]] == stub[at_stub[0]:at_stub[1]]
 
 
-def copy_images(failures, images, tag):
-    kept = []
+def copy_images(failures, images, tag, judged):
+    """The pictures the judge's failures name ("picture: PATH.png"), copied for the report. Only the
+    judge's own pictures, regular files under `judged` (its test output), are taken: a message may
+    quote what the student's code printed, and a path there could name any file, or a link to one."""
+    kept, root = [], Path(judged).resolve()
     for test, msg in failures:
         for label, path in re.findall(r"(picture|diff|reference|result): (\S+\.png)", msg):
             src = Path(path)
-            if src.exists():
+            try:
+                inside = root in src.resolve().parents and not src.is_symlink() and src.is_file()
+            except OSError:
+                inside = False
+            if inside and src.stat().st_size <= (16 << 20):
                 images.mkdir(parents=True, exist_ok=True)
                 name = src.stem if label == "picture" else label  # (a sweep's plot is named by its test)
                 dest = images / f"{tag}_{src.parent.name}_{name}.png"
