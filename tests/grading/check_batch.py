@@ -95,8 +95,18 @@ for name in expected:
 
 # Nothing a runner wrote landed outside its own folders (write_other tries every folder it can reach).
 own = ("/tapes/", "/test-output/")  # the runner's own folders (emptied for the next submission)
-intruded = [str(p) for base in (grades, subs, root) for p in base.rglob("WB_INTRUDER")
-            if not ("build-grade/w" in str(p) and any(o in str(p) for o in own))]
+def named(top, name):
+    """Every file called `name` under `top`, not crossing into another mount (a simulator's root in
+    build/ may have /proc mounted) and passing over what cannot be read."""
+    found = []
+    for folder, dirs, files in os.walk(top):
+        dirs[:] = [d for d in dirs if not os.path.ismount(os.path.join(folder, d))]
+        found += [os.path.join(folder, name)] if name in files else []
+    return found
+
+
+intruded = [p for base in (grades, subs, root) for p in named(base, "WB_INTRUDER")
+            if not ("build-grade/w" in p and any(o in p for o in own))]
 check(not intruded, f"a runner wrote into folders not its own: {intruded[:5]}")
 # No program built from a submission is left to run outside the sandbox by mistake.
 programs = [str(p) for p in (root / "build-grade").glob("w*/build/lab[0-9][0-9]*") if p.is_file()]
