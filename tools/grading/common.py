@@ -2,6 +2,7 @@
 what the machine (or the container) it runs in may use."""
 import math
 import os
+import stat
 import sys
 from pathlib import Path
 
@@ -11,6 +12,20 @@ SANDBOX_UID = 61000  # grading tree k runs student code as uid 61000 + k (when t
 BUILDER_UID = 61500  # and compiles it as uid 61500 + k
 MAX_TAPE_BYTES = 64 << 20  # what a judge reads of a runner's tape at most
 MAX_FILE_BYTES = 1 << 20  # a larger "exercise file" is not source code
+
+
+def open_regular(path):
+    """The regular file at `path` open for reading ("rb"), or None: for a file the sandbox's user may
+    have written, so no link is followed and nothing else is opened (non-blocking: a FIFO swapped in
+    would stop the grader at open)."""
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
+    except OSError:
+        return None
+    if not stat.S_ISREG(os.fstat(fd).st_mode):
+        os.close(fd)
+        return None
+    return os.fdopen(fd, "rb")
 
 
 def log(msg):

@@ -5,10 +5,10 @@ import os
 import re
 import shutil
 import signal
-import stat
 from pathlib import Path
 
 from .chunks import chunk
+from .common import open_regular
 from .sandbox import KEEP, describe_limit
 
 
@@ -31,14 +31,11 @@ def read_untrusted(path, keep=KEEP):
     """(head and tail of the regular file at `path`, its size): a file the sandbox's user wrote, so no
     link is followed, nothing but a regular file is opened (a FIFO would stop the grader), and at most
     twice `keep` bytes are read. ("", 0) when there is none."""
-    try:
-        fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
-    except OSError:
+    f = open_regular(path)
+    if f is None:
         return "", 0
-    with os.fdopen(fd, "rb") as f:
-        size = os.fstat(fd).st_size
-        if not stat.S_ISREG(os.fstat(fd).st_mode):
-            return "", 0
+    with f:
+        size = os.fstat(f.fileno()).st_size
         if size <= 2 * keep:
             return f.read(2 * keep).decode(errors="replace"), size
         head = f.read(keep)

@@ -3,12 +3,11 @@ and reused for every submission, and the copy of a runner's tape the judge reads
 import os
 import re
 import shutil
-import stat
 import subprocess
 import time
 from pathlib import Path
 
-from .common import BUILDER_UID, MAX_TAPE_BYTES, ROOT, SANDBOX_UID
+from .common import BUILDER_UID, MAX_TAPE_BYTES, ROOT, SANDBOX_UID, open_regular
 from .sandbox import minimal_env
 from .submission import load_labs, student_files
 
@@ -261,14 +260,10 @@ def copy_tape(src, dest):
         if total + size > MAX_TAPE_BYTES:
             continue
         total += size
-        try:  # (non-blocking: a FIFO swapped in since scandir would stop the grader at open)
-            fd = os.open(entry.path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
-        except OSError:
+        f_in = open_regular(entry.path)  # (a FIFO swapped in since scandir is not opened)
+        if f_in is None:
             continue
-        if not stat.S_ISREG(os.fstat(fd).st_mode):
-            os.close(fd)
-            continue
-        with os.fdopen(fd, "rb") as f_in, open(dest / entry.name, "wb") as f_out:
+        with f_in, open(dest / entry.name, "wb") as f_out:
             f_out.write(f_in.read(size))
 
 
