@@ -55,6 +55,13 @@ json encode(const std::vector<glm::vec4>& v) {
   return j;
 }
 
+json encode(const std::vector<glm::vec3>& v) {
+  json j = json::array();
+  for (const auto& e : v)
+    for (int k = 0; k < 3; ++k) j.push_back(bits(e[k]));
+  return j;
+}
+
 json encode(const std::vector<uint32_t>& v) { return json(v); }
 
 json encode(const std::vector<float>& v) {
@@ -137,6 +144,15 @@ std::vector<glm::vec4> decode<std::vector<glm::vec4>>(const json& j) {
   if (f.size() % 4) throw Error("a recorded kernel output has the wrong shape");
   std::vector<glm::vec4> v;
   for (size_t k = 0; k + 3 < f.size(); k += 4) v.emplace_back(f[k], f[k + 1], f[k + 2], f[k + 3]);
+  return v;
+}
+
+template <>
+std::vector<glm::vec3> decode<std::vector<glm::vec3>>(const json& j) {
+  const auto f = floatsOf(j, 0);
+  if (f.size() % 3) throw Error("a recorded list of points has the wrong shape");
+  std::vector<glm::vec3> v;
+  for (size_t k = 0; k + 2 < f.size(); k += 3) v.emplace_back(f[k], f[k + 1], f[k + 2]);
   return v;
 }
 

@@ -22,6 +22,7 @@ nlohmann::json encode(const glm::vec4& v);                 ///< its floats' bits
 nlohmann::json encode(const glm::dvec2& v);                ///< its doubles' bits
 nlohmann::json encode(const glm::mat4& v);                 ///< column by column
 nlohmann::json encode(const std::vector<glm::vec4>& v);    ///< every float's bits, in order
+nlohmann::json encode(const std::vector<glm::vec3>& v);    ///< every float's bits, in order
 nlohmann::json encode(const std::vector<uint32_t>& v);     ///< as they are (indices, GL enums)
 nlohmann::json encode(const std::vector<float>& v);        ///< every float's bits, in order
 nlohmann::json encode(const std::array<glm::vec3, 8>& v);  ///< every float's bits, corner by corner

@@ -1,0 +1,260 @@
+// Lab 11 tests. Layer 1: texels per pixel and its two parts on derivatives and angles worked out by
+// hand, LiSPSM's n against the formula at chosen angles, the warped matrix on a box whose images are
+// derived below, the reduction step with empty texels, and the fitted splits on clamped and empty
+// bounds. Layer 2: the field under each scheme against goldens, and the measure's numbers.
+#include "common/judge/harness.hpp"
+#include "common/platform/gl.hpp"
+#include "common/platform/image.hpp"
+#include "exercise.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using wb::test::GlTest;
+
+// The held-out tests (instructor-only) call these on inputs of their own, through the grader's plan.
+WB_CALLABLE(lab11::warpNear);
+WB_CALLABLE(lab11::warpMatrix);
+WB_CALLABLE(lab11::fittedSplits);
+
+// --- 11.1: texels per pixel ----------------------------------------------------------------------------
+// A step of one pixel moves the map coordinate by uvDx (screen x) and uvDy (screen y); times the map's
+// texels along u and v, that is a step in texels, and its length is the texels one pixel spans.
+// (0.001, 0) on a 1024 x 512 map: 1.024; (0, 0.002): 1.024. (3e-4, 4e-4) on 1000 x 1000: 0.3, 0.4: 0.5;
+// (-6e-4, 8e-4): 1.0. (1e-3, 1e-3) on 2048 x 512: (2.048, 0.512): sqrt(4.194304 + 0.262144) = 2.111031;
+// (1e-3, -1e-3) the same.
+TEST_F(GlTest, Ex11_1_TexelsPerPixelByHand) {
+  const std::vector<glm::vec4> in = {{0.001f, 0, 0, 0.002f}, {3e-4f, 4e-4f, -6e-4f, 8e-4f}, {1e-3f, 1e-3f, 1e-3f, -1e-3f}};
+  const std::vector<glm::vec4> maps = {{1024, 512, 0, 0}, {1000, 1000, 0, 0}, {2048, 512, 0, 0}};
+  std::vector<glm::vec4> inputs;
+  for (size_t k = 0; k < in.size(); ++k) inputs.insert(inputs.end(), {in[k], maps[k]});
+  const glm::vec2 want[] = {{1.024f, 1.024f}, {0.5f, 1.0f}, {2.111031f, 2.111031f}};
+  std::vector<glm::vec4> got;
+  WB_RUN_GLSL(got, "11.1", "result.xy = texelsPerPixel(IN(0).xy, IN(0).zw, IN(1).xy);", int(in.size()), 2, inputs);
+  for (size_t k = 0; k < in.size(); ++k)
+    for (int a = 0; a < 2; ++a)
+      EXPECT_NEAR(got[k][a], want[k][a], 1e-4 * want[k][a])
+          << "WRONG: " << (a ? "along screen y" : "along screen x") << ", uvDx (" << in[k].x << ", " << in[k].y
+          << "), uvDy (" << in[k].z << ", " << in[k].w << "), a " << maps[k].x << " x " << maps[k].y << " map";
+}
+
+// --- 11.2: the two parts ------------------------------------------------------------------------------
+// The eye 5 away at (0, 3, 4) from the point, normal up: cos to the eye 3/5. A pixel of 0.001 rad
+// spans 5 * 0.001 = 0.005 across the view; texels 0.01 wide: perspective 0.5. Light from (0, 1, 1):
+// cos 1/sqrt(2): projective 0.707107 / 0.6 = 1.178511. The normal twice as long changes nothing. A
+// light from below: projective 0. An eye along the surface (10, 0, 0): its cosine is held at 1e-4, the
+// light straight above: projective 1 / 1e-4 = 10000; perspective 10 * 0.002 / 0.004 = 5.
+TEST_F(GlTest, Ex11_2_PartsByHand) {
+  struct Case {
+    glm::vec4 toEye, normal, toLight, sizes;  // sizes: pixel angle, texel width
+    glm::vec2 want;
+    const char* what;
+  };
+  const Case cases[] = {
+      {{0, 3, 4, 0}, {0, 1, 0, 0}, {0, 1, 1, 0}, {0.001f, 0.01f, 0, 0}, {0.5f, 1.178511f}, "the eye at (0, 3, 4)"},
+      {{0, 3, 4, 0}, {0, 2, 0, 0}, {0, 1, 1, 0}, {0.001f, 0.01f, 0, 0}, {0.5f, 1.178511f}, "a normal of length 2"},
+      {{0, 3, 4, 0}, {0, 1, 0, 0}, {0, -1, 1, 0}, {0.001f, 0.01f, 0, 0}, {0.5f, 0}, "a light from below"},
+      {{10, 0, 0, 0}, {0, 1, 0, 0}, {0, 1, 0, 0}, {0.002f, 0.004f, 0, 0}, {5, 10000}, "an eye along the surface"},
+  };
+  std::vector<glm::vec4> inputs;
+  for (const Case& c : cases) inputs.insert(inputs.end(), {c.toEye, c.normal, c.toLight, c.sizes});
+  std::vector<glm::vec4> got;
+  WB_RUN_GLSL(got, "11.2", "result.xy = aliasingParts(IN(0).xyz, IN(1).xyz, IN(2).xyz, IN(3).x, IN(3).y);",
+              int(std::size(cases)), 4, inputs);
+  for (size_t k = 0; k < std::size(cases); ++k) {
+    const Case& c = cases[k];
+    EXPECT_NEAR(got[k].x, c.want.x, 1e-4 * c.want.x)
+        << "WRONG: the perspective part, " << c.what << ": distance " << glm::length(glm::vec3(c.toEye))
+        << " times the pixel's angle " << c.sizes.x << " over the texel's width " << c.sizes.y;
+    EXPECT_NEAR(got[k].y, c.want.y, 1e-4 * c.want.y + 1e-6)
+        << "WRONG: the projective part, " << c.what << ": cos(to the light) / cos(to the eye), toEye (" << c.toEye.x
+        << ", " << c.toEye.y << ", " << c.toEye.z << "), normal (" << c.normal.x << ", " << c.normal.y << ", "
+        << c.normal.z << "), toLight (" << c.toLight.x << ", " << c.toLight.y << ", " << c.toLight.z << ")";
+  }
+}
+
+// --- 11.3: LiSPSM's n --------------------------------------------------------------------------------
+// n_opt = (z0 + sqrt(z0 z1)) / sin g, z1 = z0 + d sin g. z0 1, d 100, sin 1: z1 101, 1 + sqrt(101) =
+// 11.049876. sin 0.5 (the fade's edge, fade 1): z1 51, (1 + 7.141428) / 0.5 = 16.282856. Strength 0.5
+// at sin 1: 22.099751. z0 2, d 30, sin 0.8: z1 26, (2 + 7.211103) / 0.8 = 11.513878. Fading: sin 0.26
+// with fadeSin 0.5 is halfway, (0.26 - 0.02) / (0.5 - 0.02) = 0.5: z1 = 27, (1 + 5.196152) / 0.26 =
+// 23.831355, over 0.5: 47.662710. fadeSin 0 never fades: sin 0.1, z1 11, (1 + 3.316625) / 0.1 = 43.16625.
+// No warp (infinity): strength 0, or sin g at or below 0.02.
+TEST(Lab11, Ex11_3_OptimalNearByHand) {
+  struct Case {
+    float z0, d, sinGamma, strength, fadeSin, want;
+    const char* what;
+  };
+  const float inf = std::numeric_limits<float>::infinity();
+  const Case cases[] = {
+      {1, 100, 1, 1, 0.5f, 11.049876f, "view across the light"},
+      {1, 100, 0.5f, 1, 0.5f, 16.282856f, "sin g 0.5, at the fade's edge"},
+      {1, 100, 1, 0.5f, 0.5f, 22.099751f, "strength 0.5"},
+      {2, 30, 0.8f, 1, 0.5f, 11.513878f, "z0 2, d 30, sin g 0.8"},
+      {1, 100, 0.26f, 1, 0.5f, 47.662710f, "sin g 0.26: halfway through the fade"},
+      {1, 100, 0.1f, 1, 0, 43.16625f, "fadeSin 0: no fade"},
+      {1, 100, 1, 0, 0.5f, inf, "strength 0: no warp"},
+      {1, 100, 0.015f, 1, 0.5f, inf, "sin g 0.015: looking along the light, no warp"},
+  };
+  for (const Case& c : cases) {
+    float got = 0;
+    WB_TRY_EXERCISE(got = WB_CALL(lab11::warpNear(c.z0, c.d, c.sinGamma, c.strength, c.fadeSin)));
+    if (std::isinf(c.want))
+      EXPECT_TRUE(std::isinf(got) && got > 0) << "WRONG: " << c.what << ": n must be +infinity (got " << got << ")";
+    else
+      EXPECT_NEAR(got, c.want, 1e-4 * c.want) << "WRONG: " << c.what << " (z0 " << c.z0 << ", d " << c.d << ", sin g "
+                                              << c.sinGamma << ", strength " << c.strength << ", fadeSin " << c.fadeSin
+                                              << ")";
+  }
+}
+
+// --- 11.4: the warped matrix --------------------------------------------------------------------------
+namespace {
+glm::vec3 ndc(const glm::mat4& m, glm::vec3 p) {
+  const glm::vec4 c = m * glm::vec4(p, 1);
+  return glm::vec3(c) / c.w;
+}
+std::vector<glm::vec3> box(glm::vec3 lo, glm::vec3 hi) {
+  std::vector<glm::vec3> out;
+  for (int k = 0; k < 8; ++k) out.push_back({k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z});
+  return out;
+}
+std::string str(glm::vec3 p) {
+  return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " + std::to_string(p.z) + ")";
+}
+}  // namespace
+
+// Light space = world (lightView the identity): the body x -2..4, y 1..11, z -5..-3, caster reach 2,
+// so the depth runs from z = -1 (near, -1) to z = -5 (far, 1), and z = -3 is 0.
+// No warp: the orthographic fit: (-2, 1, -1) -> (-1, -1, -1), (4, 11, -5) -> (1, 1, 1), (1, 6, -3) -> 0.
+// n = 5: the eye at y = 1 - 5 = -4 on x = 1; t = y + 4 runs 5..15 (f = 15); y' = 2 - 15 / t: -1 at
+// t = 5, 0.5 at the middle (t = 10: the near half of the body gets three quarters of the map), 1 at
+// t = 15. x' = 5 (x - 1) / t spans -3..3 over the body (at t = 5), so x = 5 (x - 1) / (3 t): (4, 1) ->
+// 1, (4, 11) -> 1/3, (-2, 6) -> -0.5. Depth: the orthographic depth times n / t: (4, 11, -5) -> 1/3,
+// (1, 1, -5) -> 1, (1, 6, -1) -> -0.5.
+TEST(Lab11, Ex11_4_WarpOfABoxByHand) {
+  const auto body = box({-2, 1, -5}, {4, 11, -3});
+  glm::mat4 flat(1), warped(1);
+  WB_TRY_EXERCISE(flat = WB_CALL(lab11::warpMatrix(glm::mat4(1), body, std::numeric_limits<float>::infinity(), 2)));
+  WB_TRY_EXERCISE(warped = WB_CALL(lab11::warpMatrix(glm::mat4(1), body, 5, 2)));
+  struct Case {
+    const glm::mat4* m;
+    glm::vec3 p, want;
+    const char* what;
+  };
+  const Case cases[] = {
+      {&flat, {-2, 1, -1}, {-1, -1, -1}, "no warp: the body's low corner, at the caster reach"},
+      {&flat, {4, 11, -5}, {1, 1, 1}, "no warp: the body's high corner, far side"},
+      {&flat, {1, 6, -3}, {0, 0, 0}, "no warp: the middle"},
+      {&warped, {4, 1, -3}, {1, -1, 0}, "n = 5: the near side's right edge"},
+      {&warped, {4, 11, -5}, {1.0f / 3, 1, 1.0f / 3}, "n = 5: the far side's right edge, far from the light"},
+      {&warped, {-2, 6, -3}, {-0.5f, 0.5f, 0}, "n = 5: the middle of the body (y 6) lands at y 0.5"},
+      {&warped, {1, 1, -5}, {0, -1, 1}, "n = 5: the near side, far from the light"},
+      {&warped, {1, 6, -1}, {0, 0.5f, -0.5f}, "n = 5: the middle, at the caster reach"},
+  };
+  for (const Case& c : cases) {
+    const glm::vec3 got = ndc(*c.m, c.p);
+    for (int a = 0; a < 3; ++a)
+      EXPECT_NEAR(got[a], c.want[a], 1e-4) << "WRONG: " << c.what << ": the point " << str(c.p) << " lands at "
+                                           << str(got) << ", want " << str(c.want)
+                                           << " (light space = world, body x -2..4, y 1..11, z -5..-3, reach 2)";
+  }
+}
+
+// Any light view: the body's corners land inside the map, touching each of its four edges, and the
+// map's y of each corner follows from its light-space y alone (the warp's axis): y' = (a t + b) / t with
+// t = y - (smallest y) + n, a = (f + n) / (f - n), b = -2 f n / (f - n), f = n + d; a light view that
+// is not the identity, so that one left out shows.
+TEST(Lab11, Ex11_4_AnyLightViewTouchesEveryEdge) {
+  const glm::vec3 dir = glm::normalize(glm::vec3(-0.5f, -0.6f, -0.62f)), eye(3, 5, 2);
+  const glm::mat4 lightView = glm::lookAt(eye, eye + dir, glm::vec3(0.3f, 0.2f, -0.9f));
+  const auto body = box({-6, 0, -40}, {7, 3, -2});
+  for (float n : {2.0f, 15.0f, 200.0f}) {
+    glm::mat4 m(1);
+    WB_TRY_EXERCISE(m = WB_CALL(lab11::warpMatrix(lightView, body, n, 5)));
+    double lo = 1e30, hi = -1e30;
+    for (const glm::vec3& b : body) lo = std::min(lo, double((lightView * glm::vec4(b, 1)).y)), hi = std::max(hi, double((lightView * glm::vec4(b, 1)).y));
+    const double f = n + (hi - lo), a = (f + n) / (f - n), bb = -2 * f * n / (f - n);
+    glm::vec2 least(1e30f), most(-1e30f);
+    for (const glm::vec3& b : body) {
+      const glm::vec3 p = ndc(m, b);
+      const double t = (lightView * glm::vec4(b, 1)).y - lo + n;
+      EXPECT_NEAR(p.y, (a * t + bb) / t, 1e-3) << "WRONG: n = " << n << ", the corner " << str(b)
+                                               << ": its map y must follow its light-space y (" << t - n
+                                               << " past the body's nearest)";
+      EXPECT_LE(std::abs(p.z), 1 + 1e-4) << "WRONG: n = " << n << ", the corner " << str(b) << " lands at depth " << p.z
+                                         << ", outside the map's depth range";
+      least = glm::min(least, glm::vec2(p)), most = glm::max(most, glm::vec2(p));
+    }
+    EXPECT_NEAR(least.x, -1, 1e-4) << "WRONG: n = " << n << ": the body must touch the map's left edge";
+    EXPECT_NEAR(most.x, 1, 1e-4) << "WRONG: n = " << n << ": the body must touch the map's right edge";
+    EXPECT_NEAR(least.y, -1, 1e-4) << "WRONG: n = " << n << ": the body's near side must be the map's bottom edge";
+    EXPECT_NEAR(most.y, 1, 1e-4) << "WRONG: n = " << n << ": the body's far side must be the map's top edge";
+  }
+}
+
+// --- 11.5: one step of the reduction ---------------------------------------------------------------
+// (min, max) of the parts that hold something; (0, 0) holds nothing and must not pull the minimum to 0.
+TEST_F(GlTest, Ex11_5_ReductionSkipsEmptyTexels) {
+  struct Case {
+    glm::vec4 ab, cd;
+    glm::vec2 want;
+    const char* what;
+  };
+  const Case cases[] = {
+      {{3, 5, 2, 9}, {4, 4, 7, 8}, {2, 9}, "four parts that each hold something"},
+      {{3, 5, 0, 0}, {4, 4, 0, 0}, {3, 5}, "two empty parts (the sky)"},
+      {{0, 0, 0, 0}, {0, 0, 12, 40}, {12, 40}, "one part alone holds something"},
+      {{0, 0, 0, 0}, {0, 0, 0, 0}, {0, 0}, "nothing at all"},
+  };
+  std::vector<glm::vec4> inputs;
+  for (const Case& c : cases) inputs.insert(inputs.end(), {c.ab, c.cd});
+  std::vector<glm::vec4> got;
+  WB_RUN_GLSL(got, "11.5", "result.xy = minMaxDepth(IN(0).xy, IN(0).zw, IN(1).xy, IN(1).zw);", int(std::size(cases)), 2,
+              inputs);
+  for (size_t k = 0; k < std::size(cases); ++k) {
+    const Case& c = cases[k];
+    EXPECT_NEAR(got[k].x, c.want.x, 1e-5) << "WRONG: the smallest, " << c.what << ": (" << c.ab.x << ", " << c.ab.y
+                                          << "), (" << c.ab.z << ", " << c.ab.w << "), (" << c.cd.x << ", " << c.cd.y
+                                          << "), (" << c.cd.z << ", " << c.cd.w << ")";
+    EXPECT_NEAR(got[k].y, c.want.y, 1e-5) << "WRONG: the largest, " << c.what;
+  }
+}
+
+// --- 11.6: fitted splits -----------------------------------------------------------------------------
+// Empty bounds (0, 0) on near 1, far 100, four cascades, lambda 0.5: lab 10's practical row, 1, 14.45614,
+// 30.25, 53.43639, 100. Bounds 3..48, two cascades: lambda 1: 3, sqrt(3 * 48) = 12, 48; lambda 0: 3, 25.5,
+// 48. Bounds 0.05..500 clamp to near 0.1, far 120: lambda 1, 0.1, sqrt(12) = 3.464102, 120. Bounds
+// 150..200 beyond far 100 clamp to an empty range, and (5, 5) holds one depth: near..far, lambda 0:
+// 1, 50.5, 100.
+TEST(Lab11, Ex11_6_SplitsBetweenTheBounds) {
+  struct Case {
+    glm::vec2 bounds;
+    float nearPlane, farPlane;
+    int cascades;
+    float lambda;
+    std::vector<float> want;
+    const char* what;
+  };
+  const Case cases[] = {
+      {{0, 0}, 1, 100, 4, 0.5f, {1, 14.45614f, 30.25f, 53.43639f, 100}, "nothing in view: near to far"},
+      {{3, 48}, 1, 100, 2, 1, {3, 12, 48}, "bounds 3..48, lambda 1"},
+      {{3, 48}, 1, 100, 2, 0, {3, 25.5f, 48}, "bounds 3..48, lambda 0"},
+      {{0.05f, 500}, 0.1f, 120, 2, 1, {0.1f, 3.464102f, 120}, "bounds wider than near..far: clamped"},
+      {{150, 200}, 1, 100, 2, 0, {1, 50.5f, 100}, "bounds beyond far: an empty range, near to far"},
+      {{5, 5}, 1, 100, 2, 0, {1, 50.5f, 100}, "one depth alone: an empty range, near to far"},
+  };
+  for (const Case& c : cases) {
+    std::vector<float> got;
+    WB_TRY_EXERCISE(got = WB_CALL(lab11::fittedSplits(c.bounds, c.nearPlane, c.farPlane, c.cascades, c.lambda)));
+    ASSERT_EQ(got.size(), c.want.size()) << "WRONG: " << c.what << ": " << c.cascades << " cascades have "
+                                         << c.want.size() << " split distances";
+    for (size_t i = 0; i < got.size(); ++i)
+      EXPECT_NEAR(got[i], c.want[i], 1e-5 * c.want[i])
+          << "WRONG: " << c.what << ", C_" << i << " (bounds " << c.bounds.x << ".." << c.bounds.y << ", near "
+          << c.nearPlane << ", far " << c.farPlane << ", lambda " << c.lambda << ")";
+  }
+}
