@@ -121,9 +121,9 @@ class WarpLab : public wb::Lab {
 
  private:
   struct Maps {
-    bool ready = true;                       // every exercise the frame needs returned a value
-    std::vector<float> splits;               // C_0 .. C_N (11.6)
-    std::vector<glm::mat4> matrices;         // one light matrix per map (11.4, with 11.3's n)
+    bool ready = true;                             // every exercise the frame needs returned a value
+    std::vector<float> splits;                     // C_0 .. C_N (11.6)
+    std::vector<glm::mat4> matrices;               // one light matrix per map (11.4, with 11.3's n)
     std::vector<std::array<glm::vec3, 8>> bodies;  // each map's slice of the view, for debug.frustum
   };
 
@@ -133,17 +133,19 @@ class WarpLab : public wb::Lab {
     const bool cascades = scheme >= kCsm, warped = scheme == kLispsm || scheme == kCsmLispsm;
     const int n = cascades ? count : 1;
     Maps m;
-    m.ready = attempt("11.6", m.splits, [&] {
-      return lab11::fittedSplits(bounds, camera.nearPlane, shadowFar, n, lambda);
-    });
+    m.ready =
+        attempt("11.6", m.splits, [&] { return lab11::fittedSplits(bounds, camera.nearPlane, shadowFar, n, lambda); });
     if (!m.ready || m.splits.size() != size_t(n) + 1 || !std::is_sorted(m.splits.begin(), m.splits.end())) {
       m.ready = false;
       m.splits.clear();
-      for (int i = 0; i <= n; ++i) m.splits.push_back(camera.nearPlane + (shadowFar - camera.nearPlane) * float(i) / float(n));
+      for (int i = 0; i <= n; ++i)
+        m.splits.push_back(camera.nearPlane + (shadowFar - camera.nearPlane) * float(i) / float(n));
     }
     const glm::vec3 forward = -glm::vec3(glm::inverse(camera.view())[2]);
     const float sinGamma = glm::length(glm::cross(forward, glm::normalize(light.direction)));
-    const glm::vec3 up = sinGamma > 1e-3f ? forward : std::abs(light.direction.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    const glm::vec3 up = sinGamma > 1e-3f                      ? forward
+                         : std::abs(light.direction.y) > 0.99f ? glm::vec3(1, 0, 0)
+                                                               : glm::vec3(0, 1, 0);
     const glm::mat4 lightView = glm::lookAt(glm::vec3(0), light.direction, up);  // +y: the warp axis
     const float reach = 0.5f * glm::length(scene.boundsMax - scene.boundsMin);
     for (int i = 0; i < n; ++i) {
@@ -154,9 +156,8 @@ class WarpLab : public wb::Lab {
         lo = std::min(lo, y), hi = std::max(hi, y);
       }
       float near = std::numeric_limits<float>::infinity();
-      const bool haveNear = attempt("11.3", near, [&] {
-        return lab11::warpNear(m.splits[size_t(i)], hi - lo, sinGamma, strength, fadeSin);
-      });
+      const bool haveNear = attempt(
+          "11.3", near, [&] { return lab11::warpNear(m.splits[size_t(i)], hi - lo, sinGamma, strength, fadeSin); });
       if (!warped || !(near < 64 * (hi - lo))) near = std::numeric_limits<float>::infinity();  // (float: see README)
       glm::mat4 matrix(1);
       const bool haveMatrix = attempt("11.4", matrix, [&] { return lab11::warpMatrix(lightView, body, near, reach); });
@@ -172,7 +173,8 @@ class WarpLab : public wb::Lab {
   // The camera's frustum between view distances d0 and d1: its eight corners in the world.
   std::vector<glm::vec3> sliceOf(float d0, float d1) const {
     const float aspect = float(frameSize().x) / float(std::max(1, frameSize().y));
-    const glm::mat4 toWorld = glm::inverse(glm::perspective(glm::radians(camera.pose.fov), aspect, d0, d1) * camera.view());
+    const glm::mat4 toWorld =
+        glm::inverse(glm::perspective(glm::radians(camera.pose.fov), aspect, d0, d1) * camera.view());
     std::vector<glm::vec3> out;
     for (int k = 0; k < 8; ++k) {
       const glm::vec4 p = toWorld * glm::vec4(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1, 1);
@@ -185,7 +187,8 @@ class WarpLab : public wb::Lab {
   bool frameDepthBounds(glm::vec2& bounds) {
     auto timer = timePass("depth bounds");
     depthBounds.begin(frameSize());
-    prepass->set("u_viewProj", camera.projection(float(frameSize().x) / float(std::max(1, frameSize().y))) * camera.view());
+    prepass->set("u_viewProj",
+                 camera.projection(float(frameSize().x) / float(std::max(1, frameSize().y))) * camera.view());
     prepass->set("u_view", camera.view());
     prepass->set("u_alphaCutoff", alphaCutoff());
     gpuScene->draw(*prepass);
@@ -197,8 +200,9 @@ class WarpLab : public wb::Lab {
   // The measure over the ground: the worst (fewest texels per pixel), the median and the spread.
   std::string groundStats() {
     glFinish();
-    const wb::FloatImage v = stage().target.readVisibility();
-    const std::vector<glm::vec4> at = stage().target.readPositions();
+    const wb::LabStage& host = stage();  // the frame target the lab drew into
+    const wb::FloatImage v = host.target.readVisibility();
+    const std::vector<glm::vec4> at = host.target.readPositions();
     std::vector<float> ground;
     for (size_t k = 0; k < v.pixels.size() && k < at.size(); ++k)
       if (at[k].w != 0 && v.pixels[k] > 0) ground.push_back(v.pixels[k]);
@@ -213,7 +217,8 @@ class WarpLab : public wb::Lab {
 
   // PASS 2's program for the view (one per view: llvmpipe runs both sides of a branch).
   const wb::Program& sceneVariant() {
-    const char* defines[] = {"", "#define WB_VIEW_DENSITY\n", "#define WB_VIEW_PERSPECTIVE\n", "#define WB_VIEW_PROJECTIVE\n"};
+    const char* defines[] = {"", "#define WB_VIEW_DENSITY\n", "#define WB_VIEW_PERSPECTIVE\n",
+                             "#define WB_VIEW_PROJECTIVE\n"};
     wb::Program*& p = scenePrograms[view];
     if (!p) p = &loadProgram({{GL_VERTEX_SHADER, "warp.vert"}, {GL_FRAGMENT_SHADER, "scene.frag"}}, defines[view]);
     return *p;

@@ -14,7 +14,9 @@ namespace lab11 {
 // EXERCISE 11.3
 float warpNear(float zNear, float depthRange, float sinGamma, float strength, float fadeSin) {
   const float off = 0.02f;  // below about one degree the warp gains nothing: the uniform map
-  const float fade = sinGamma <= off ? 0.0f : fadeSin <= off ? 1.0f : std::clamp((sinGamma - off) / (fadeSin - off), 0.0f, 1.0f);
+  const float fade = sinGamma <= off  ? 0.0f
+                     : fadeSin <= off ? 1.0f
+                                      : std::clamp((sinGamma - off) / (fadeSin - off), 0.0f, 1.0f);
   const float s = strength * fade;
   if (s <= 0) return std::numeric_limits<float>::infinity();
   const float z1 = zNear + depthRange * sinGamma;
@@ -35,11 +37,11 @@ glm::mat4 warpMatrix(const glm::mat4& lightView, const std::vector<glm::vec3>& b
   const glm::mat4 depth = glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, zNear, zFar);
   const float f = n + (hi.y - lo.y), cx = 0.5f * (lo.x + hi.x);
   const float a = (f + n) / (f - n), b = -2 * f * n / (f - n);
-  glm::mat4 warp(0);  // warp[column][row]
-  warp[0][0] = n, warp[3][0] = -n * cx;                   // x' = n (x - cx)
-  warp[1][1] = a, warp[3][1] = a * (n - lo.y) + b;        // y' = a t + b: -1 at t = n, 1 at t = f
-  warp[2][2] = n;                                         // depth' = n depth
-  warp[1][3] = 1, warp[3][3] = n - lo.y;                  // w = t
+  glm::mat4 warp(0);                                // warp[column][row]
+  warp[0][0] = n, warp[3][0] = -n * cx;             // x' = n (x - cx)
+  warp[1][1] = a, warp[3][1] = a * (n - lo.y) + b;  // y' = a t + b: -1 at t = n, 1 at t = f
+  warp[2][2] = n;                                   // depth' = n depth
+  warp[1][3] = 1, warp[3][3] = n - lo.y;            // w = t
   const glm::mat4 m = warp * depth * lightView;
   float xl = 1e30f, xh = -1e30f;
   for (const glm::vec3& p : body) {

@@ -27,7 +27,8 @@ WB_CALLABLE(lab11::fittedSplits);
 // (-6e-4, 8e-4): 1.0. (1e-3, 1e-3) on 2048 x 512: (2.048, 0.512): sqrt(4.194304 + 0.262144) = 2.111031;
 // (1e-3, -1e-3) the same.
 TEST_F(GlTest, Ex11_1_TexelsPerPixelByHand) {
-  const std::vector<glm::vec4> in = {{0.001f, 0, 0, 0.002f}, {3e-4f, 4e-4f, -6e-4f, 8e-4f}, {1e-3f, 1e-3f, 1e-3f, -1e-3f}};
+  const std::vector<glm::vec4> in = {
+      {0.001f, 0, 0, 0.002f}, {3e-4f, 4e-4f, -6e-4f, 8e-4f}, {1e-3f, 1e-3f, 1e-3f, -1e-3f}};
   const std::vector<glm::vec4> maps = {{1024, 512, 0, 0}, {1000, 1000, 0, 0}, {2048, 512, 0, 0}};
   std::vector<glm::vec4> inputs;
   for (size_t k = 0; k < in.size(); ++k) inputs.insert(inputs.end(), {in[k], maps[k]});
@@ -105,9 +106,9 @@ TEST(Lab11, Ex11_3_OptimalNearByHand) {
     if (std::isinf(c.want))
       EXPECT_TRUE(std::isinf(got) && got > 0) << "WRONG: " << c.what << ": n must be +infinity (got " << got << ")";
     else
-      EXPECT_NEAR(got, c.want, 1e-4 * c.want) << "WRONG: " << c.what << " (z0 " << c.z0 << ", d " << c.d << ", sin g "
-                                              << c.sinGamma << ", strength " << c.strength << ", fadeSin " << c.fadeSin
-                                              << ")";
+      EXPECT_NEAR(got, c.want, 1e-4 * c.want)
+          << "WRONG: " << c.what << " (z0 " << c.z0 << ", d " << c.d << ", sin g " << c.sinGamma << ", strength "
+          << c.strength << ", fadeSin " << c.fadeSin << ")";
   }
 }
 
@@ -158,9 +159,9 @@ TEST(Lab11, Ex11_4_WarpOfABoxByHand) {
   for (const Case& c : cases) {
     const glm::vec3 got = ndc(*c.m, c.p);
     for (int a = 0; a < 3; ++a)
-      EXPECT_NEAR(got[a], c.want[a], 1e-4) << "WRONG: " << c.what << ": the point " << str(c.p) << " lands at "
-                                           << str(got) << ", want " << str(c.want)
-                                           << " (light space = world, body x -2..4, y 1..11, z -5..-3, reach 2)";
+      EXPECT_NEAR(got[a], c.want[a], 1e-4)
+          << "WRONG: " << c.what << ": the point " << str(c.p) << " lands at " << str(got) << ", want " << str(c.want)
+          << " (light space = world, body x -2..4, y 1..11, z -5..-3, reach 2)";
   }
 }
 
@@ -176,15 +177,17 @@ TEST(Lab11, Ex11_4_AnyLightViewTouchesEveryEdge) {
     glm::mat4 m(1);
     WB_TRY_EXERCISE(m = WB_CALL(lab11::warpMatrix(lightView, body, n, 5)));
     double lo = 1e30, hi = -1e30;
-    for (const glm::vec3& b : body) lo = std::min(lo, double((lightView * glm::vec4(b, 1)).y)), hi = std::max(hi, double((lightView * glm::vec4(b, 1)).y));
+    for (const glm::vec3& b : body)
+      lo = std::min(lo, double((lightView * glm::vec4(b, 1)).y)),
+      hi = std::max(hi, double((lightView * glm::vec4(b, 1)).y));
     const double f = n + (hi - lo), a = (f + n) / (f - n), bb = -2 * f * n / (f - n);
     glm::vec2 least(1e30f), most(-1e30f);
     for (const glm::vec3& b : body) {
       const glm::vec3 p = ndc(m, b);
       const double t = (lightView * glm::vec4(b, 1)).y - lo + n;
-      EXPECT_NEAR(p.y, (a * t + bb) / t, 1e-3) << "WRONG: n = " << n << ", the corner " << str(b)
-                                               << ": its map y must follow its light-space y (" << t - n
-                                               << " past the body's nearest)";
+      EXPECT_NEAR(p.y, (a * t + bb) / t, 1e-3)
+          << "WRONG: n = " << n << ", the corner " << str(b) << ": its map y must follow its light-space y (" << t - n
+          << " past the body's nearest)";
       EXPECT_LE(std::abs(p.z), 1 + 1e-4) << "WRONG: n = " << n << ", the corner " << str(b) << " lands at depth " << p.z
                                          << ", outside the map's depth range";
       least = glm::min(least, glm::vec2(p)), most = glm::max(most, glm::vec2(p));
@@ -217,9 +220,9 @@ TEST_F(GlTest, Ex11_5_ReductionSkipsEmptyTexels) {
               inputs);
   for (size_t k = 0; k < std::size(cases); ++k) {
     const Case& c = cases[k];
-    EXPECT_NEAR(got[k].x, c.want.x, 1e-5) << "WRONG: the smallest, " << c.what << ": (" << c.ab.x << ", " << c.ab.y
-                                          << "), (" << c.ab.z << ", " << c.ab.w << "), (" << c.cd.x << ", " << c.cd.y
-                                          << "), (" << c.cd.z << ", " << c.cd.w << ")";
+    EXPECT_NEAR(got[k].x, c.want.x, 1e-5)
+        << "WRONG: the smallest, " << c.what << ": (" << c.ab.x << ", " << c.ab.y << "), (" << c.ab.z << ", " << c.ab.w
+        << "), (" << c.cd.x << ", " << c.cd.y << "), (" << c.cd.z << ", " << c.cd.w << ")";
     EXPECT_NEAR(got[k].y, c.want.y, 1e-5) << "WRONG: the largest, " << c.what;
   }
 }
@@ -257,4 +260,127 @@ TEST(Lab11, Ex11_6_SplitsBetweenTheBounds) {
           << "WRONG: " << c.what << ", C_" << i << " (bounds " << c.bounds.x << ".." << c.bounds.y << ", near "
           << c.nearPlane << ", far " << c.farPlane << ", lambda " << c.lambda << ")";
   }
+}
+
+// --- Layer 2 ------------------------------------------------------------------------------------------
+namespace {
+const float kTol = 0.1f;
+const double kMaxFraction = 0.01;
+}  // namespace
+
+TEST(Lab11, Ex11_3_SceneFieldLispsm) {
+  wb::test::expectSceneMatchesGolden("11.3", "field_lispsm", wb::test::labArgs({}), kTol, kMaxFraction);
+}
+TEST(Lab11, Ex11_3_SceneOrchardTowardTheSun) {
+  wb::test::expectSceneMatchesGolden("11.3", "orchard_toward_sun",
+                                     wb::test::labArgs({"light.orbit=180", "warp.sdsm=on"}, "warp_orchard.json"), kTol,
+                                     kMaxFraction);
+}
+TEST(Lab11, Ex11_4_SceneFieldUniform) {
+  wb::test::expectSceneMatchesGolden("11.4", "field_uniform", wb::test::labArgs({"warp.scheme=uniform"}), kTol,
+                                     kMaxFraction);
+}
+TEST(Lab11, Ex11_4_SceneFieldLispsm) {
+  wb::test::expectSceneMatchesGolden("11.4", "field_lispsm", wb::test::labArgs({}), kTol, kMaxFraction);
+}
+TEST(Lab11, Ex11_4_SceneFieldCascadesWarped) {
+  wb::test::expectSceneMatchesGolden("11.4", "field_csm_lispsm", wb::test::labArgs({"warp.scheme=csm_lispsm"}), kTol,
+                                     kMaxFraction);
+}
+TEST(Lab11, Ex11_5_SceneFieldSdsm) {
+  wb::test::expectSceneMatchesGolden("11.5", "field_csm_sdsm", wb::test::labArgs({"warp.scheme=csm", "warp.sdsm=on"}),
+                                     kTol, kMaxFraction);
+}
+TEST(Lab11, Ex11_5_SceneOrchardSdsm) {
+  wb::test::expectSceneMatchesGolden("11.5", "orchard_toward_sun",
+                                     wb::test::labArgs({"light.orbit=180", "warp.sdsm=on"}, "warp_orchard.json"), kTol,
+                                     kMaxFraction);
+}
+TEST(Lab11, Ex11_6_SceneFieldCascades) {
+  wb::test::expectSceneMatchesGolden("11.6", "field_csm", wb::test::labArgs({"warp.scheme=csm"}), kTol, kMaxFraction);
+}
+TEST(Lab11, Ex11_6_SceneFieldSdsm) {
+  wb::test::expectSceneMatchesGolden("11.6", "field_csm_sdsm", wb::test::labArgs({"warp.scheme=csm", "warp.sdsm=on"}),
+                                     kTol, kMaxFraction);
+}
+
+// The measure over the ground (a measuring view writes it where the visibility goes, 0 on every
+// other surface; the sky keeps the clear value 1 exactly): its quantile q (0.5: the median), or -1
+// with `failure` set.
+namespace {
+double groundQuantile(const std::string& id, const std::string& name, const std::vector<std::string>& settings,
+                      std::string& failure, double q = 0.5, const std::string& scene = "") {
+  const auto file = wb::test::testOutputDir() / (name + ".pfm");
+  std::vector<std::string> args = wb::test::labArgs(settings, scene);
+  args.insert(args.end(), {"--size", "480x270", "--dump-visibility", file.string()});
+  std::string why;
+  wb::test::runLabOutput(id, name, args, why);
+  if (!why.empty()) {
+    if (failure.empty()) failure = why;
+    return -1;
+  }
+  std::vector<float> v;
+  for (float x : wb::readPfm(file).pixels) {
+    if (x <= -1e29f) {
+      if (failure.empty()) failure = "NOT IMPLEMENTED: the frame shows the not-implemented placeholder";
+      return -1;
+    }
+    if (x > 0 && x != 1.0f && std::isfinite(x)) v.push_back(x);
+  }
+  if (v.size() < 1000) {
+    if (failure.empty()) failure = "WRONG: the measure is 0, negative or not a number over most of the ground";
+    return -1;
+  }
+  const size_t k = std::min(v.size() - 1, size_t(q * double(v.size())));
+  std::nth_element(v.begin(), v.begin() + long(k), v.end());
+  return double(v[k]);
+}
+}  // namespace
+
+// Texels per pixel is linear in the map's resolution: the same view with a map twice as large (the
+// same matrices) spans twice the texels per pixel, within 2% at the median (the solution: 2.000).
+TEST(Lab11, Ex11_1_MeasuredTwiceTheTexelsOnTwiceTheMap) {
+  std::string failure;
+  const double small = groundQuantile("11.1", "density_1024", {"warp.view=density", "warp.scheme=uniform"}, failure);
+  const double large = groundQuantile("11.1", "density_2048",
+                                      {"warp.view=density", "warp.scheme=uniform", "shadow.map_size=2048"}, failure);
+  if (!failure.empty()) FAIL() << failure;
+  EXPECT_NEAR(large / small, 2.0, 0.04) << "WRONG: the median texels per pixel over the ground is " << small
+                                        << " with a 1024 map and " << large << " with a 2048 one";
+}
+
+// The perspective part is a distance over a texel's width: twice the map, twice the part. The
+// projective part is a ratio of cosines: the map's size changes nothing (the solution: 2.000, 1.000).
+TEST(Lab11, Ex11_2_MeasuredPartsAgainstTheMapSize) {
+  std::string failure;
+  const double p1 =
+      groundQuantile("11.2", "perspective_1024", {"warp.view=perspective", "warp.scheme=uniform"}, failure);
+  const double p2 = groundQuantile("11.2", "perspective_2048",
+                                   {"warp.view=perspective", "warp.scheme=uniform", "shadow.map_size=2048"}, failure);
+  const double q1 = groundQuantile("11.2", "projective_1024", {"warp.view=projective", "warp.scheme=uniform"}, failure);
+  const double q2 = groundQuantile("11.2", "projective_2048",
+                                   {"warp.view=projective", "warp.scheme=uniform", "shadow.map_size=2048"}, failure);
+  if (!failure.empty()) FAIL() << failure;
+  EXPECT_NEAR(p2 / p1, 2.0, 0.04) << "WRONG: the perspective part's median is " << p1 << " with a 1024 map and " << p2
+                                  << " with a 2048 one";
+  EXPECT_NEAR(q2 / q1, 1.0, 0.02) << "WRONG: the projective part's median is " << q1 << " with a 1024 map and " << q2
+                                  << " with a 2048 one";
+}
+
+// The point of the lab: on the orchard, looking toward the sun, LiSPSM fitted to the frame's depths
+// gives the worst pixels (the 1st percentile of texels per pixel over the ground) at least twice the
+// texels of the uniform map (the solution, at 480x270: 0.0315 and 0.179, 5.7 times).
+TEST(Lab11, Ex11_4_MeasuredTheWarpRaisesTheWorstPixels) {
+  std::string failure;
+  const std::string orchard = "warp_orchard.json";
+  const double uniform = groundQuantile("11.4", "orchard_uniform",
+                                        {"warp.view=density", "warp.scheme=uniform", "light.orbit=180", "warp.sdsm=on"},
+                                        failure, 0.01, orchard);
+  const double warped = groundQuantile("11.4", "orchard_lispsm",
+                                       {"warp.view=density", "warp.scheme=lispsm", "light.orbit=180", "warp.sdsm=on"},
+                                       failure, 0.01, orchard);
+  if (!failure.empty()) FAIL() << failure;
+  EXPECT_GT(warped, 2 * uniform) << "WRONG: the orchard toward the sun: the worst 1% of the ground gets " << warped
+                                 << " texels per pixel from the warped map and " << uniform
+                                 << " from the uniform one (want at least twice)";
 }
