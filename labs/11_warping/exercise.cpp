@@ -38,3 +38,23 @@ std::vector<float> fittedSplits([[maybe_unused]] glm::vec2 bounds, [[maybe_unuse
 }
 
 }  // namespace lab11
+
+namespace lab11 {
+
+// EXERCISE 11.H1: bug hunt, "with SDSM on, the cascades give fewer texels than without" (README.md, Bug
+// hunt 11.H1). Not a stub: this is the lab's working code, and it has a bug that shipped in a real
+// engine. Find it from the symptom; the handout says how to see it and how it is measured.
+// The split positions travel as fractions of the shadow range (0 at its start, 1 at its end), the form
+// an engine's settings and its shader share; here they become view distances again.
+std::vector<float> switchDistances(const std::vector<float>& splits, float nearPlane, float farPlane) {
+  std::vector<float> out;
+  if (splits.size() < 2) return out;
+  const float start = splits.front(), length = splits.back() - splits.front();
+  for (size_t i = 1; i + 1 < splits.size(); ++i) {
+    const float fraction = (splits[i] - start) / length;
+    out.push_back(nearPlane + fraction * (farPlane - nearPlane));
+  }
+  return out;
+}
+
+}  // namespace lab11

@@ -37,4 +37,11 @@ glm::mat4 warpMatrix(const glm::mat4& lightView, const std::vector<glm::vec3>& b
 /// C_i = λ · lo · (hi / lo)^(i / N) + (1 − λ) · (lo + (hi − lo) · i / N); C_0 = lo and C_N = hi exactly.
 std::vector<float> fittedSplits(glm::vec2 bounds, float nearPlane, float farPlane, int cascades, float lambda);
 
+/// EXERCISE 11.H1 (a bug hunt: working code with a real bug in it; README.md): the view distances at
+/// which the camera pass switches from one cascade to the next (the far end of every cascade but the
+/// last), from `splits` (11.6: C_0 .. C_N, fitted to the frame with warp.sdsm=on). The camera pass keeps
+/// the split positions as fractions of the shadow range, as engines do, and turns them back into
+/// distances here; `nearPlane` and `farPlane` are the camera's near plane and the shadow distance.
+std::vector<float> switchDistances(const std::vector<float>& splits, float nearPlane, float farPlane);
+
 }  // namespace lab11

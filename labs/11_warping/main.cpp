@@ -88,11 +88,11 @@ class WarpLab : public wb::Lab {
     wb::bindTexture(1, maps.texture());
     glBindSampler(1, compare.id());
     p.set("u_compare", 1);
-    glm::vec4 far(1e9f);
+    glm::vec4 far(1e9f);  // where each cascade ends for the camera pass (11.H1)
     for (int i = 0; i < 4; ++i) {
       const size_t k = std::min(size_t(i), m.matrices.size() - 1);
       p.set(("u_cascades[" + std::to_string(i) + "]").c_str(), m.matrices[k]);
-      if (i + 1 < int(m.splits.size())) far[i] = m.splits[size_t(i) + 1];
+      if (size_t(i) < m.switchAt.size()) far[i] = m.switchAt[size_t(i)];
     }
     p.set("u_splits", far);
     p.set("u_count", int(m.matrices.size()));
@@ -123,6 +123,7 @@ class WarpLab : public wb::Lab {
   struct Maps {
     bool ready = true;                             // every exercise the frame needs returned a value
     std::vector<float> splits;                     // C_0 .. C_N (11.6)
+    std::vector<float> switchAt;                   // where the camera pass moves to the next cascade (11.H1)
     std::vector<glm::mat4> matrices;               // one light matrix per map (11.4, with 11.3's n)
     std::vector<std::array<glm::vec3, 8>> bodies;  // each map's slice of the view, for debug.frustum
   };
@@ -141,6 +142,9 @@ class WarpLab : public wb::Lab {
       for (int i = 0; i <= n; ++i)
         m.splits.push_back(camera.nearPlane + (shadowFar - camera.nearPlane) * float(i) / float(n));
     }
+    const bool switched =
+        attempt("11.H1", m.switchAt, [&] { return lab11::switchDistances(m.splits, camera.nearPlane, shadowFar); });
+    m.ready = m.ready && switched && m.switchAt.size() == size_t(n) - 1;
     const glm::vec3 forward = -glm::vec3(glm::inverse(camera.view())[2]);
     const float sinGamma = glm::length(glm::cross(forward, glm::normalize(light.direction)));
     const glm::vec3 up = sinGamma > 1e-3f                      ? forward
@@ -204,9 +208,13 @@ class WarpLab : public wb::Lab {
     const wb::FloatImage v = host.target.readVisibility();
     const std::vector<glm::vec4> at = host.target.readPositions();
     std::vector<float> ground;
-    for (size_t k = 0; k < v.pixels.size() && k < at.size(); ++k)
+    bool todo = false;
+    for (size_t k = 0; k < v.pixels.size() && k < at.size(); ++k) {
+      todo = todo || v.pixels[k] <= -1e29f;
       if (at[k].w != 0 && v.pixels[k] > 0) ground.push_back(v.pixels[k]);
+    }
     const char* what[] = {"", "texels per pixel", "perspective part", "projective part"};
+    if (todo) return std::string(what[view]) + ": not measured, an exercise the frame needs is not implemented yet";
     if (ground.empty()) return std::string(what[view]) + " over the ground: no ground in view";
     std::sort(ground.begin(), ground.end());
     char line[200];

@@ -68,3 +68,22 @@ std::vector<float> fittedSplits(glm::vec2 bounds, float nearPlane, float farPlan
 }
 
 }  // namespace lab11
+
+namespace lab11 {
+
+// EXERCISE 11.H1: bug hunt (the fix). The fractions were taken over the fitted range (C_0 .. C_N), so
+// they must be turned back over that same range; the camera's near plane and shadow distance are the
+// range only while warp.sdsm is off.
+std::vector<float> switchDistances(const std::vector<float>& splits, [[maybe_unused]] float nearPlane,
+                                   [[maybe_unused]] float farPlane) {
+  std::vector<float> out;
+  if (splits.size() < 2) return out;
+  const float start = splits.front(), length = splits.back() - splits.front();
+  for (size_t i = 1; i + 1 < splits.size(); ++i) {
+    const float fraction = (splits[i] - start) / length;
+    out.push_back(start + fraction * length);
+  }
+  return out;
+}
+
+}  // namespace lab11

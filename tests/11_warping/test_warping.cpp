@@ -19,6 +19,7 @@ using wb::test::GlTest;
 WB_CALLABLE(lab11::warpNear);
 WB_CALLABLE(lab11::warpMatrix);
 WB_CALLABLE(lab11::fittedSplits);
+WB_CALLABLE(lab11::switchDistances);
 
 // --- 11.1: texels per pixel ----------------------------------------------------------------------------
 // A step of one pixel moves the map coordinate by uvDx (screen x) and uvDy (screen y); times the map's
@@ -287,9 +288,10 @@ TEST(Lab11, Ex11_4_SceneFieldCascadesWarped) {
   wb::test::expectSceneMatchesGolden("11.4", "field_csm_lispsm", wb::test::labArgs({"warp.scheme=csm_lispsm"}), kTol,
                                      kMaxFraction);
 }
+// (SDSM's scenes use one map: cascades fitted to the frame are hunt 11.H1's scenario.)
 TEST(Lab11, Ex11_5_SceneFieldSdsm) {
-  wb::test::expectSceneMatchesGolden("11.5", "field_csm_sdsm", wb::test::labArgs({"warp.scheme=csm", "warp.sdsm=on"}),
-                                     kTol, kMaxFraction);
+  wb::test::expectSceneMatchesGolden("11.5", "field_lispsm_sdsm", wb::test::labArgs({"warp.sdsm=on"}), kTol,
+                                     kMaxFraction);
 }
 TEST(Lab11, Ex11_5_SceneOrchardSdsm) {
   wb::test::expectSceneMatchesGolden("11.5", "orchard_toward_sun",
@@ -300,8 +302,8 @@ TEST(Lab11, Ex11_6_SceneFieldCascades) {
   wb::test::expectSceneMatchesGolden("11.6", "field_csm", wb::test::labArgs({"warp.scheme=csm"}), kTol, kMaxFraction);
 }
 TEST(Lab11, Ex11_6_SceneFieldSdsm) {
-  wb::test::expectSceneMatchesGolden("11.6", "field_csm_sdsm", wb::test::labArgs({"warp.scheme=csm", "warp.sdsm=on"}),
-                                     kTol, kMaxFraction);
+  wb::test::expectSceneMatchesGolden("11.6", "field_lispsm_sdsm", wb::test::labArgs({"warp.sdsm=on"}), kTol,
+                                     kMaxFraction);
 }
 
 // The measure over the ground (a measuring view writes it where the visibility goes, 0 on every
@@ -338,7 +340,8 @@ double groundQuantile(const std::string& id, const std::string& name, const std:
 }  // namespace
 
 // Texels per pixel is linear in the map's resolution: the same view with a map twice as large (the
-// same matrices) spans twice the texels per pixel, within 2% at the median (the solution: 2.000).
+// same matrices) spans twice the texels per pixel, within 2% at the median (the solution at 480x270:
+// 0.109 and 0.218).
 TEST(Lab11, Ex11_1_MeasuredTwiceTheTexelsOnTwiceTheMap) {
   std::string failure;
   const double small = groundQuantile("11.1", "density_1024", {"warp.view=density", "warp.scheme=uniform"}, failure);
@@ -350,7 +353,8 @@ TEST(Lab11, Ex11_1_MeasuredTwiceTheTexelsOnTwiceTheMap) {
 }
 
 // The perspective part is a distance over a texel's width: twice the map, twice the part. The
-// projective part is a ratio of cosines: the map's size changes nothing (the solution: 2.000, 1.000).
+// projective part is a ratio of cosines: the map's size changes nothing (the solution at 480x270:
+// perspective 0.138 and 0.277, projective 1.79 and 1.79).
 TEST(Lab11, Ex11_2_MeasuredPartsAgainstTheMapSize) {
   std::string failure;
   const double p1 =
@@ -369,7 +373,7 @@ TEST(Lab11, Ex11_2_MeasuredPartsAgainstTheMapSize) {
 
 // The point of the lab: on the orchard, looking toward the sun, LiSPSM fitted to the frame's depths
 // gives the worst pixels (the 1st percentile of texels per pixel over the ground) at least twice the
-// texels of the uniform map (the solution, at 480x270: 0.0315 and 0.179, 5.7 times).
+// texels of the uniform map (the solution, at 480x270: 0.0543 and 0.262, 4.8 times).
 TEST(Lab11, Ex11_4_MeasuredTheWarpRaisesTheWorstPixels) {
   std::string failure;
   const std::string orchard = "warp_orchard.json";
@@ -383,4 +387,58 @@ TEST(Lab11, Ex11_4_MeasuredTheWarpRaisesTheWorstPixels) {
   EXPECT_GT(warped, 2 * uniform) << "WRONG: the orchard toward the sun: the worst 1% of the ground gets " << warped
                                  << " texels per pixel from the warped map and " << uniform
                                  << " from the uniform one (want at least twice)";
+}
+
+// --- Bug hunt 11.H1: "with SDSM on, the cascades give fewer texels than without" -------------------------
+// The camera pass must move to the next cascade exactly where the maps were fitted to end: at C_1 ..
+// C_(N-1) of 11.6, whatever range they were fitted over. Fitted to the frame, 4 .. 120 with C = 4, 12,
+// 30, 120: 12 and 30 (the bug turns the fractions 8/116 and 26/116 back over 0.1 .. 120: 8.36 and 26.99).
+// Not fitted (near 0.1 to 120): 10. Fitted 20 .. 60 on near 1, far 100: 35.
+TEST(Lab11, Ex11_H1_SwitchWhereTheMapsWereFitted) {
+  struct Case {
+    std::vector<float> splits;
+    float nearPlane, farPlane;
+    std::vector<float> want;
+    const char* what;
+  };
+  const Case cases[] = {
+      {{4, 12, 30, 120}, 0.1f, 120, {12, 30}, "fitted to the frame, 4 .. 120"},
+      {{0.1f, 10, 120}, 0.1f, 120, {10}, "near to far (no SDSM)"},
+      {{20, 35, 60}, 1, 100, {35}, "fitted to the frame, 20 .. 60"},
+  };
+  for (const Case& c : cases) {
+    std::vector<float> got;
+    WB_TRY_EXERCISE(got = WB_CALL(lab11::switchDistances(c.splits, c.nearPlane, c.farPlane)));
+    ASSERT_EQ(got.size(), c.want.size()) << "WRONG: " << c.what << ": " << c.splits.size() - 1 << " cascades switch at "
+                                         << c.want.size() << " distances";
+    for (size_t i = 0; i < got.size(); ++i)
+      EXPECT_NEAR(got[i], c.want[i], 1e-4 * c.want[i])
+          << "WRONG: " << c.what << ": the camera pass leaves cascade " << i << " at " << got[i]
+          << ", but its map was fitted to end at C_" << i + 1 << " = " << c.want[i];
+  }
+}
+
+// The scenario: three cascades fitted to the field's frame, logarithmic splits: the median texels per
+// pixel over the ground must be at least 1.15 times that of the same cascades between near and far
+// (the solution at 480x270: 1.01 and 0.775, 1.30 times; the bug as handed out: 0.838, 1.08 times).
+TEST(Lab11, Ex11_H1_MeasuredSdsmGivesMoreTexels) {
+  std::string failure;
+  const std::vector<std::string> common = {"warp.view=density", "warp.scheme=csm", "csm.lambda=1"};
+  auto with = [&](const char* sdsm) {
+    std::vector<std::string> s = common;
+    s.push_back(std::string("warp.sdsm=") + sdsm);
+    return s;
+  };
+  const double off = groundQuantile("11.H1", "csm_sdsm_off", with("off"), failure);
+  const double on = groundQuantile("11.H1", "csm_sdsm_on", with("on"), failure);
+  if (!failure.empty()) FAIL() << failure;
+  EXPECT_GT(on, 1.15 * off) << "WRONG: three cascades fitted to the frame give the ground a median of " << on
+                            << " texels per pixel, and between near and far " << off
+                            << ": fitting to the frame must give more";
+}
+
+TEST(Lab11, Ex11_H1_SceneCascadesFittedToTheFrame) {
+  wb::test::expectSceneMatchesGolden("11.H1", "field_csm_sdsm",
+                                     wb::test::labArgs({"warp.scheme=csm", "warp.sdsm=on", "csm.lambda=1"}), kTol,
+                                     kMaxFraction);
 }

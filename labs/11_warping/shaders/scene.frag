@@ -24,6 +24,12 @@ uniform vec2 u_mapTexels;
 uniform vec3 u_eye;
 uniform float u_pixelAngle;
 
+// Whether cascade i's map holds the point: in front of the warp's eye, inside [-1, 1] on every axis.
+bool inMap(int i) {
+  vec4 c = v_light[i];
+  return c.w > 0.0 && all(lessThanEqual(abs(c.xyz), vec3(c.w)));
+}
+
 // The cascade of view distance `depth`: how many inner splits lie at or before it.
 int cascadeAt(float depth) {
   vec4 passed = step(u_splits, vec4(depth)) * vec4(lessThan(ivec4(0, 1, 2, 3), ivec4(u_count - 1)));
@@ -70,6 +76,10 @@ void main() {
     return;
   }
   int i = cascadeAt(v_depth);
+  // A pixel outside its cascade's map reads the next cascade whose map holds it (a coarser one, never
+  // a pixel lit for want of a map); where none does, the last.
+  for (int k = 0; k < 3; ++k)
+    if (i + 1 < u_count && !inMap(i)) i += 1;
   vec4 c = v_light[i];
 #if defined(WB_VIEW_DENSITY)
   vec2 t = texelsPerPixel(uvAlong(i, c, dFdx(v_world)), uvAlong(i, c, dFdy(v_world)), u_mapTexels);
@@ -93,9 +103,7 @@ void main() {
   wbWriteOutputs(measureColour(m), n.y > 0.99 ? m : 0.0, v_world, true);
 #else
   vec3 p = c.xyz / c.w * 0.5 + 0.5;
-  float visibility = c.w > 0.0 && all(lessThanEqual(abs(p - 0.5), vec3(0.5)))
-                         ? texture(u_compare, vec4(p.xy, float(i), p.z))
-                         : 1.0;
+  float visibility = inMap(i) ? texture(u_compare, vec4(p.xy, float(i), p.z)) : 1.0;
   vec3 colour = wbShade(albedo, n, toLight, vec3(wbLightReach(v_world)), visibility);
   wbWriteOutputs(colour, visibility, v_world, facesLight);
 #endif
