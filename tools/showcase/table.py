@@ -21,7 +21,7 @@ import subprocess
 import sys
 
 TECHNIQUES = ["hard", "slope_bias", "pcf", "esm", "vsm", "evsm", "msm", "pcss", "cube_map", "volumes", "cascades",
-              "ray_traced"]
+              "lispsm", "sdsm", "ray_traced"]
 FILTERED = ["pcf", "vsm", "esm", "evsm"]  # seed 000's columns, in its order
 ROUNDS = 5
 SIZE = "960x540"  # the showcase's own; tools/platforms/gpu_check.sh run --timings asks for 1920x1080 (--size)
