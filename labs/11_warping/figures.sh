@@ -32,7 +32,7 @@ measure() {
       for row in "uniform:uniform:off" "CSM:csm:off" "CSM + SDSM:csm:on" "LiSPSM:lispsm:off" "LiSPSM + SDSM:lispsm:on" \
         "CSM + LiSPSM:csm_lispsm:off" "CSM + LiSPSM + SDSM:csm_lispsm:on"; do
         IFS=: read -r name scheme sdsm <<<"$row"
-        echo "| $scene | $sun | $name | $(measure --scene "$file" --set light.orbit=$orbit --set warp.scheme=$scheme --set warp.sdsm=$sdsm) |"
+        echo "| $scene | $sun | $name | $(measure --scene "$file" --set light.orbit=$orbit --set warp.scheme="$scheme" --set warp.sdsm="$sdsm") |"
       done
     done
   done

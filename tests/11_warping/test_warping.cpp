@@ -442,3 +442,92 @@ TEST(Lab11, Ex11_H1_SceneCascadesFittedToTheFrame) {
                                      wb::test::labArgs({"warp.scheme=csm", "warp.sdsm=on", "csm.lambda=1"}), kTol,
                                      kMaxFraction);
 }
+
+// --- The measure against the geometry -------------------------------------------------------------------
+// scenes/warp_plane.json: a flat ground, a sun straight above, the camera at target (0, 0, -10),
+// distance 8, yaw 20, pitch 25, fov 50 (OrbitCamera: eye = target + 8 (sin 20 cos 25, sin 25, cos 20
+// cos 25)), near 0.1, at 480x270; the uniform map covers the view's slice from 0.1 to 120 (the default
+// warp.shadow_distance). Worked out here from the geometry alone: the slice's corners in the light's
+// view (looking down, its y the view direction across the light) give the map's texel w_x by w_y; the
+// rays through neighbouring pixel centres meet the ground at X; a pixel step moves the map by
+// ((dX . e_x) / w_x, (dX . e_y) / w_y) texels. The GPU's derivative is a difference within a 2x2 quad,
+// taken on either of its rows or columns (coarse or fine), so the bound is the smallest and largest of
+// those candidates, widened by 0.2% for float: every ground pixel's measure must lie within it.
+namespace {
+struct PlaneTruth {
+  glm::dmat4 toWorld;  // clip to world
+  glm::dvec3 ex, ey;   // the map's axes in the world
+  double wx, wy;       // a texel's width along them
+  int width = 480, height = 270;
+  glm::dvec3 ground(double px, double py) const {  // where the ray through pixel centre (px, py) meets y = 0
+    const glm::dvec4 a = toWorld * glm::dvec4((px + 0.5) / width * 2 - 1, (py + 0.5) / height * 2 - 1, -1, 1);
+    const glm::dvec4 b = toWorld * glm::dvec4((px + 0.5) / width * 2 - 1, (py + 0.5) / height * 2 - 1, 1, 1);
+    const glm::dvec3 p = glm::dvec3(a) / a.w, q = glm::dvec3(b) / b.w;
+    return p + (q - p) * (-p.y / (q.y - p.y));
+  }
+  double texels(glm::dvec3 step) const {
+    return glm::length(glm::dvec2(glm::dot(step, ex) / wx, glm::dot(step, ey) / wy));
+  }
+};
+
+PlaneTruth planeTruth() {
+  PlaneTruth t;
+  const double yaw = glm::radians(20.0), pitch = glm::radians(25.0);
+  const glm::dvec3 target(0, 0, -10);
+  const glm::dvec3 eye =
+      target + 8.0 * glm::dvec3(std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch));
+  const glm::dmat4 view = glm::lookAt(eye, target, glm::dvec3(0, 1, 0));
+  const double aspect = double(t.width) / t.height, fov = glm::radians(50.0);
+  t.toWorld = glm::inverse(glm::perspective(fov, aspect, 0.1, 200.0) * view);
+  const glm::dvec3 forward = glm::normalize(target - eye);
+  const glm::dmat4 light = glm::lookAt(glm::dvec3(0), glm::dvec3(0, -1, 0), forward);
+  t.ex = glm::dvec3(light[0][0], light[1][0], light[2][0]), t.ey = glm::dvec3(light[0][1], light[1][1], light[2][1]);
+  const glm::dmat4 slice = glm::inverse(glm::perspective(fov, aspect, 0.1, 120.0) * view);
+  glm::dvec2 lo(1e30), hi(-1e30);
+  for (int k = 0; k < 8; ++k) {
+    const glm::dvec4 c = slice * glm::dvec4(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1, 1);
+    const glm::dvec3 p = glm::dvec3(c) / c.w;
+    const glm::dvec2 l(glm::dot(p, t.ex), glm::dot(p, t.ey));
+    lo = glm::min(lo, l), hi = glm::max(hi, l);
+  }
+  t.wx = (hi.x - lo.x) / 1024, t.wy = (hi.y - lo.y) / 1024;
+  return t;
+}
+}  // namespace
+
+TEST(Lab11, Ex11_1_MeasuredAgainstTheGroundPlaneTruth) {
+  const auto file = wb::test::testOutputDir() / "plane_density.pfm";
+  std::vector<std::string> args = wb::test::labArgs({"warp.view=density", "warp.scheme=uniform"}, "warp_plane.json");
+  args.insert(args.end(), {"--size", "480x270", "--dump-visibility", file.string()});
+  std::string why;
+  wb::test::runLabOutput("11.1", "plane_density", args, why);
+  if (!why.empty()) FAIL() << why;
+  const wb::FloatImage got = wb::readPfm(file);
+  const PlaneTruth t = planeTruth();
+  int checked = 0, outside = 0;
+  std::string first;
+  for (int py = 2; py < t.height / 2; py += 5)
+    for (int px = 2; px < t.width - 2; px += 7) {
+      const float m = got.at(px, py);
+      if (m <= -1e29f) FAIL() << "NOT IMPLEMENTED: the frame shows the not-implemented placeholder";
+      if (!(m > 0) || m == 1.0f) continue;  // (the post, or the sky)
+      const int qx = px & ~1, qy = py & ~1;
+      double lo = 1e30, hi = 0;
+      for (int r = 0; r < 2; ++r)
+        for (int c = 0; c < 2; ++c) {
+          const double tx = t.texels(t.ground(qx + 1, qy + r) - t.ground(qx, qy + r));
+          const double ty = t.texels(t.ground(qx + c, qy + 1) - t.ground(qx + c, qy));
+          const double want = std::min(tx, ty);
+          lo = std::min(lo, want), hi = std::max(hi, want);
+        }
+      ++checked;
+      if (m < lo * 0.998 || m > hi * 1.002) {
+        if (outside++ == 0)
+          first = "pixel (" + std::to_string(px) + ", " + std::to_string(py) + "): measured " + std::to_string(m) +
+                  " texels per pixel, the geometry gives " + std::to_string(lo) + " to " + std::to_string(hi);
+      }
+    }
+  ASSERT_GT(checked, 200) << "ERROR: too few ground pixels were measured";
+  EXPECT_EQ(outside, 0) << "WRONG: " << outside << " of " << checked << " ground pixels outside the bound; first, "
+                        << first;
+}

@@ -45,7 +45,9 @@ const std::vector<Technique> kTechniques = {
     {"volumes", "09_shadow_volumes", {}, ""},
     {"cascades", "10_cascades", {"light.index=2", "csm.shadow_distance=30", "csm.lambda=0.3"}, "csm.kernel"},
     {"lispsm", "11_warping", {"light.index=2", "warp.shadow_distance=30", "warp.scheme=lispsm", "warp.sdsm=on"}, ""},
-    {"sdsm", "11_warping", {"light.index=2", "warp.shadow_distance=30", "warp.scheme=csm", "warp.sdsm=on", "csm.lambda=1"},
+    {"sdsm",
+     "11_warping",
+     {"light.index=2", "warp.shadow_distance=30", "warp.scheme=csm", "warp.sdsm=on", "csm.lambda=1"},
      ""},
     {"ray_traced", "09_shadow_volumes", {"shadow.technique=ray_traced"}, ""},
 };
