@@ -60,3 +60,21 @@ echo "wrote $out/strength.md"
   done
 } >"$out/lambda.md"
 echo "wrote $out/lambda.md"
+
+# The bias: a world bias (before the warp) against a depth bias (after it), uniform and LiSPSM + SDSM
+# on the field, 480x270: the acne rate and the shadow area against exact visibility (--metrics).
+bias() {
+  "$solution" --headless --size 480x270 --set warp.sdsm=on --metrics "$@" 2>&1 | tr '\n' ' ' |
+    sed -n 's/.*acne rate \([0-9.]*%\).*shadow area \([0-9.]*%\) of the exact.*/\1 | \2/p'
+}
+{
+  echo "| bias | uniform: acne | uniform: shadow area | LiSPSM: acne | LiSPSM: shadow area |"
+  echo "|---|---:|---:|---:|---:|"
+  for b in 0.02 0.05 0.1; do
+    echo "| $b m, world | $(bias --set warp.scheme=uniform --set warp.bias=$b) | $(bias --set warp.scheme=lispsm --set warp.bias=$b) |"
+  done
+  for b in 0.0005 0.001 0.002; do
+    echo "| $b, depth | $(bias --set warp.scheme=uniform --set warp.bias_space=depth --set warp.depth_bias=$b) | $(bias --set warp.scheme=lispsm --set warp.bias_space=depth --set warp.depth_bias=$b) |"
+  done
+} >"$out/bias.md"
+echo "wrote $out/bias.md"

@@ -46,6 +46,11 @@ class WarpLab : public wb::Lab {
                        "its projective part (11.2), written where --dump-visibility writes visibility (the ground "
                        "alone; 0 elsewhere)");
     settings.add("warp.bias", biasWorld, 0.0f, 0.5f, "constant bias, metres towards the light (before any warp)");
+    settings.addChoice("warp.bias_space", biasSpace, {"world", "depth"},
+                       "world: warp.bias moves the point towards the light before any matrix; depth: warp.depth_bias "
+                       "is taken off the map's depth after the warp (the acne a warp brings back)");
+    settings.add("warp.depth_bias", biasDepth, 0.0f, 0.02f,
+                 "warp.bias_space=depth: the bias in the map's depth (0..1)");
     settings.assign("shadow.map_size=1024");
     useLightFaces();
   }
@@ -101,7 +106,8 @@ class WarpLab : public wb::Lab {
     p.set("u_mapTexels", glm::vec2(float(shadowMapSize())));
     p.set("u_eye", glm::vec3(glm::inverse(camera.view())[3]));
     p.set("u_pixelAngle", 2 * std::tan(glm::radians(camera.pose.fov) / 2) / float(std::max(1, frameSize().y)));
-    p.set("u_biasWorld", biasWorld);
+    p.set("u_biasWorld", biasSpace ? 0.0f : biasWorld);
+    p.set("u_biasDepth", biasSpace ? biasDepth : 0.0f);
     gpuScene->draw(p);
     glBindSampler(1, 0);
     if (view != 0 && ++framesSinceStats >= 20) framesSinceStats = 0, stats = groundStats();
@@ -247,6 +253,8 @@ class WarpLab : public wb::Lab {
   float shadowFar = 120;
   int view = 0;
   float biasWorld = 0.1f;
+  int biasSpace = 0;  // world
+  float biasDepth = 0.002f;
   int framesSinceStats = 0;
   std::string stats;
 };

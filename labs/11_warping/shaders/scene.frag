@@ -23,6 +23,7 @@ uniform int u_count, u_ready;
 uniform vec2 u_mapTexels;
 uniform vec3 u_eye;
 uniform float u_pixelAngle;
+uniform float u_biasDepth;  // warp.bias_space=depth: taken off the map's depth after the warp
 
 // Whether cascade i's map holds the point: in front of the warp's eye, inside [-1, 1] on every axis.
 bool inMap(int i) {
@@ -103,7 +104,7 @@ void main() {
   wbWriteOutputs(measureColour(m), n.y > 0.99 ? m : 0.0, v_world, true);
 #else
   vec3 p = c.xyz / c.w * 0.5 + 0.5;
-  float visibility = inMap(i) ? texture(u_compare, vec4(p.xy, float(i), p.z)) : 1.0;
+  float visibility = inMap(i) ? texture(u_compare, vec4(p.xy, float(i), p.z - u_biasDepth)) : 1.0;
   vec3 colour = wbShade(albedo, n, toLight, vec3(wbLightReach(v_world)), visibility);
   wbWriteOutputs(colour, visibility, v_world, facesLight);
 #endif
