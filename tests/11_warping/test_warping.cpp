@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 using wb::test::GlTest;
@@ -493,6 +494,44 @@ PlaneTruth planeTruth() {
   t.wx = (hi.x - lo.x) / 1024, t.wy = (hi.y - lo.y) / 1024;
   return t;
 }
+
+// Runs the plane scene under `scheme` and holds every sampled ground pixel's measure within the bound
+// the geometry gives: `texels(at, step)` is a pixel step's texels at the ground point `at`.
+void expectPlaneMeasureWithinGeometry(const std::string& name, const std::string& scheme,
+                                      const std::function<double(glm::dvec3, glm::dvec3)>& texels) {
+  const auto file = wb::test::testOutputDir() / (name + ".pfm");
+  std::vector<std::string> args = wb::test::labArgs({"warp.view=density", "warp.scheme=" + scheme}, "warp_plane.json");
+  args.insert(args.end(), {"--size", "480x270", "--dump-visibility", file.string()});
+  std::string why;
+  wb::test::runLabOutput("11.1", name, args, why);
+  if (!why.empty()) FAIL() << why;
+  const wb::FloatImage got = wb::readPfm(file);
+  const PlaneTruth t = planeTruth();
+  int checked = 0, outside = 0;
+  std::string first;
+  for (int py = 2; py < t.height / 2; py += 5)
+    for (int px = 2; px < t.width - 2; px += 7) {
+      const float m = got.at(px, py);
+      if (m <= -1e29f) FAIL() << "NOT IMPLEMENTED: the frame shows the not-implemented placeholder";
+      if (!(m > 0) || m == 1.0f) continue;  // (the post, or the sky)
+      const int qx = px & ~1, qy = py & ~1;
+      const glm::dvec3 at = t.ground(px, py);
+      double lo = 1e30, hi = 0;
+      for (int r = 0; r < 2; ++r)
+        for (int c = 0; c < 2; ++c) {
+          const double tx = texels(at, t.ground(qx + 1, qy + r) - t.ground(qx, qy + r));
+          const double ty = texels(at, t.ground(qx + c, qy + 1) - t.ground(qx + c, qy));
+          lo = std::min(lo, std::min(tx, ty)), hi = std::max(hi, std::min(tx, ty));
+        }
+      ++checked;
+      if ((m < lo * 0.998 || m > hi * 1.002) && outside++ == 0)
+        first = "pixel (" + std::to_string(px) + ", " + std::to_string(py) + "): measured " + std::to_string(m) +
+                " texels per pixel, the geometry gives " + std::to_string(lo) + " to " + std::to_string(hi);
+    }
+  ASSERT_GT(checked, 200) << "ERROR: too few ground pixels were measured";
+  EXPECT_EQ(outside, 0) << "WRONG: " << outside << " of " << checked << " ground pixels outside the bound; first, "
+                        << first;
+}
 }  // namespace
 
 // The same plane under LiSPSM at n_opt (warp.scheme=lispsm, strength 1: sin g = cos 25 degrees is
@@ -547,76 +586,13 @@ WarpedPlane warpedPlane() {
 }  // namespace
 
 TEST(Lab11, Ex11_1_MeasuredAgainstTheWarpedPlaneTruth) {
-  const auto file = wb::test::testOutputDir() / "plane_density_lispsm.pfm";
-  std::vector<std::string> args = wb::test::labArgs({"warp.view=density", "warp.scheme=lispsm"}, "warp_plane.json");
-  args.insert(args.end(), {"--size", "480x270", "--dump-visibility", file.string()});
-  std::string why;
-  wb::test::runLabOutput("11.1", "plane_density_lispsm", args, why);
-  if (!why.empty()) FAIL() << why;
-  const wb::FloatImage got = wb::readPfm(file);
   const WarpedPlane w = warpedPlane();
-  const PlaneTruth& t = w.plane;
-  int checked = 0, outside = 0;
-  std::string first;
-  for (int py = 2; py < t.height / 2; py += 5)
-    for (int px = 2; px < t.width - 2; px += 7) {
-      const float m = got.at(px, py);
-      if (m <= -1e29f) FAIL() << "NOT IMPLEMENTED: the frame shows the not-implemented placeholder";
-      if (!(m > 0) || m == 1.0f) continue;  // (the post, or the sky)
-      const int qx = px & ~1, qy = py & ~1;
-      const glm::dvec3 at = t.ground(px, py);
-      double lo = 1e30, hi = 0;
-      for (int r = 0; r < 2; ++r)
-        for (int c = 0; c < 2; ++c) {
-          const double tx = w.texels(at, t.ground(qx + 1, qy + r) - t.ground(qx, qy + r));
-          const double ty = w.texels(at, t.ground(qx + c, qy + 1) - t.ground(qx + c, qy));
-          lo = std::min(lo, std::min(tx, ty)), hi = std::max(hi, std::min(tx, ty));
-        }
-      ++checked;
-      if (m < lo * 0.998 || m > hi * 1.002) {
-        if (outside++ == 0)
-          first = "pixel (" + std::to_string(px) + ", " + std::to_string(py) + "): measured " + std::to_string(m) +
-                  " texels per pixel, the geometry gives " + std::to_string(lo) + " to " + std::to_string(hi);
-      }
-    }
-  ASSERT_GT(checked, 200) << "ERROR: too few ground pixels were measured";
-  EXPECT_EQ(outside, 0) << "WRONG: " << outside << " of " << checked << " ground pixels outside the bound; first, "
-                        << first;
+  expectPlaneMeasureWithinGeometry("plane_density_lispsm", "lispsm",
+                                   [&](glm::dvec3 at, glm::dvec3 step) { return w.texels(at, step); });
 }
 
 TEST(Lab11, Ex11_1_MeasuredAgainstTheGroundPlaneTruth) {
-  const auto file = wb::test::testOutputDir() / "plane_density.pfm";
-  std::vector<std::string> args = wb::test::labArgs({"warp.view=density", "warp.scheme=uniform"}, "warp_plane.json");
-  args.insert(args.end(), {"--size", "480x270", "--dump-visibility", file.string()});
-  std::string why;
-  wb::test::runLabOutput("11.1", "plane_density", args, why);
-  if (!why.empty()) FAIL() << why;
-  const wb::FloatImage got = wb::readPfm(file);
   const PlaneTruth t = planeTruth();
-  int checked = 0, outside = 0;
-  std::string first;
-  for (int py = 2; py < t.height / 2; py += 5)
-    for (int px = 2; px < t.width - 2; px += 7) {
-      const float m = got.at(px, py);
-      if (m <= -1e29f) FAIL() << "NOT IMPLEMENTED: the frame shows the not-implemented placeholder";
-      if (!(m > 0) || m == 1.0f) continue;  // (the post, or the sky)
-      const int qx = px & ~1, qy = py & ~1;
-      double lo = 1e30, hi = 0;
-      for (int r = 0; r < 2; ++r)
-        for (int c = 0; c < 2; ++c) {
-          const double tx = t.texels(t.ground(qx + 1, qy + r) - t.ground(qx, qy + r));
-          const double ty = t.texels(t.ground(qx + c, qy + 1) - t.ground(qx + c, qy));
-          const double want = std::min(tx, ty);
-          lo = std::min(lo, want), hi = std::max(hi, want);
-        }
-      ++checked;
-      if (m < lo * 0.998 || m > hi * 1.002) {
-        if (outside++ == 0)
-          first = "pixel (" + std::to_string(px) + ", " + std::to_string(py) + "): measured " + std::to_string(m) +
-                  " texels per pixel, the geometry gives " + std::to_string(lo) + " to " + std::to_string(hi);
-      }
-    }
-  ASSERT_GT(checked, 200) << "ERROR: too few ground pixels were measured";
-  EXPECT_EQ(outside, 0) << "WRONG: " << outside << " of " << checked << " ground pixels outside the bound; first, "
-                        << first;
+  expectPlaneMeasureWithinGeometry("plane_density", "uniform",
+                                   [&](glm::dvec3, glm::dvec3 step) { return t.texels(step); });
 }
