@@ -47,6 +47,10 @@ struct FrameShown {
   glm::mat4 viewProj{1};     ///< what the scene was seen through (viewProj())
   float alphaCutoff = 0.5f;  ///< alpha.cutoff
   int lightRays = 16;        ///< rays per pixel of the area-light reference (truth.light_samples)
+  /// Set when the frame's visibility output holds a measure of the lab's own (lab 10's debug.density,
+  /// lab 11's warp.view): it gives that measure's numbers on one line, and the host then measures
+  /// nothing against exact visibility (the shadow numbers of such a frame would mean nothing).
+  std::function<std::string()> ownMeasure;
 };
 
 /// Base class of every lab. Override the hooks; use the protected helpers.

@@ -166,6 +166,7 @@ void Presenter::drawBand(int k, const std::string& numbers, glm::ivec2 size, flo
 }
 
 std::string Presenter::numbersLine(const MeasureResult& r) {
+  if (!r.ownMeasure.empty()) return "measured: " + r.ownMeasure;  // (a frame that holds a lab's own measure)
   if (r.todoPixels > 0) return "not measured: an exercise this frame needs is unfinished";
   if (!r.halves.empty()) {  // split screen: each half on its own
     std::string out;

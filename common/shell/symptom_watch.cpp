@@ -33,6 +33,10 @@ bool SymptomWatch::due(const Settings& settings, const glm::mat4& viewProj, glm:
 }
 
 void SymptomWatch::record(const MeasureResult& r) {
+  if (!r.ownMeasure.empty()) {  // the view writes a measure, not visibility
+    line_ = "now: not measured (this view shows a measure, not the shadows)";
+    return;
+  }
   if (r.todoPixels > 0) {  // a stub's pattern is on screen: acne and leak would count it as shadow
     line_ = "now: not measured (the frame shows the not-implemented pattern)";
     return;

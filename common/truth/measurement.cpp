@@ -29,6 +29,8 @@ std::string whyNotOrthographic2D(const LightView& v) {
 }  // namespace
 
 nlohmann::json MeasureResult::toJson() const {
+  if (!ownMeasure.empty())  // a frame that holds a lab's own measure: no shadow numbers at all
+    return {{"own_measure", ownMeasure}, {"todo_pixels", todoPixels}, {"notes", notes}};
   nlohmann::json j = {{"acne_percent", 100 * metrics.acneRate()},
                       {"leak_percent", 100 * metrics.leakRate()},
                       {"shadow_light_percent", 100 * metrics.meanShadowLight()},

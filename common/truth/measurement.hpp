@@ -27,6 +27,7 @@ struct MeasureResult {
   std::vector<PenumbraSlab> penumbra;  ///< the scene's penumbra probe, if it has one and the light a size
   SeamError seams;                     ///< a cube map's seams against the rest (pixels = 0 for other maps)
   std::string notes;                   ///< why a measurement was skipped, if one was
+  std::string ownMeasure;              ///< a lab's own measure's numbers, for a frame that holds no visibility
   long todoPixels = 0;                 ///< pixels showing a stub's WB_TODO: the numbers mean nothing yet
   /// The sum, over the exact shadow's outline, of one map texel's size in pixels there
   /// (outlineTexelPixels): how far the map alone may move the drawn area (0 without a map).
@@ -41,12 +42,12 @@ struct MeasureResult {
   std::string text;              ///< the whole result for people
   std::vector<uint8_t> heatmap;  ///< RGBA8: acne red, leaks blue (rows bottom to top)
   double milliseconds = 0;       ///< time the measurement took
-  /// The numbers as JSON: acne_percent, leak_percent, shadow_light_percent, shadow_area_ratio,
-  /// wrong_outside_rim_percent (acne and leaks beyond kRimPixels of the exact edges), contact_gap_texels
-  /// (null when not defined), pcf_diff_percent and pcf_lighter_percent (null when not defined),
-  /// area_mean_abs_percent and area_off_percent (null for a point light; over the pixels where the
-  /// frame or the area-light reference is below 1), penumbra (rows), seam_error_percent,
-  /// rest_error_percent and seam_pixels (null unless the light has a cube map).
+  /// The numbers as JSON (a frame with ownMeasure: own_measure alone): acne_percent, leak_percent,
+  /// shadow_light_percent, shadow_area_ratio, wrong_outside_rim_percent (acne and leaks beyond kRimPixels of the exact
+  /// edges), contact_gap_texels (null when not defined), pcf_diff_percent and pcf_lighter_percent (null when not
+  /// defined), area_mean_abs_percent and area_off_percent (null for a point light; over the pixels where the frame or
+  /// the area-light reference is below 1), penumbra (rows), seam_error_percent, rest_error_percent and seam_pixels
+  /// (null unless the light has a cube map).
   nlohmann::json toJson() const;
 };
 

@@ -81,6 +81,15 @@ class CascadeLab : public wb::Lab {
     attempt("10.1", [] { lab10::splitDistances(1, 10, 2, lab10::SplitScheme::Uniform, 0); });
   }
 
+  // debug.density writes texels per pixel where the visibility goes: no shadow numbers for it (lab 11
+  // measures it over the ground).
+  wb::FrameShown shown() const override {
+    wb::FrameShown f = Lab::shown();
+    if (showDensity)
+      f.ownMeasure = [] { return std::string("debug.density: texels per pixel (lab 11 gives its numbers)"); };
+    return f;
+  }
+
   void render() override {
     if (pathStep > 0) camera.pose = poseAt(pathStep);
     const wb::Light& light = scene.lights[size_t(lightIndex)];

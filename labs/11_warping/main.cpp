@@ -110,15 +110,15 @@ class WarpLab : public wb::Lab {
     p.set("u_biasDepth", biasSpace ? biasDepth : 0.0f);
     gpuScene->draw(p);
     glBindSampler(1, 0);
-    if (view != 0 && ++framesSinceStats >= 20) framesSinceStats = 0, stats = groundStats();
+    if (view != 0 && ++framesSinceStats >= 20) framesSinceStats = 0, stats = groundStats();  // (the Settings window)
   }
 
-  // --metrics (and the Measure button): the measure's numbers over the ground, beside the host's.
-  void measured(const std::string&, bool) override {
-    if (view == 0) return;
-    stats = groundStats();
-    std::printf("%s\n", stats.c_str());
-    std::fflush(stdout);
+  // In a measuring view, --metrics, the Measure button and a presenter step give the measure's numbers
+  // over the ground instead of shadow numbers (the visibility output holds the measure).
+  wb::FrameShown shown() const override {
+    wb::FrameShown f = Lab::shown();
+    if (view != 0) f.ownMeasure = [this] { return groundStats(); };
+    return f;
   }
 
   void ui() override {
@@ -208,7 +208,7 @@ class WarpLab : public wb::Lab {
   }
 
   // The measure over the ground: the worst (fewest texels per pixel), the median and the spread.
-  std::string groundStats() {
+  std::string groundStats() const {
     glFinish();
     const wb::LabStage& host = stage();  // the frame target the lab drew into
     const wb::FloatImage v = host.target.readVisibility();

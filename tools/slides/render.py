@@ -228,6 +228,8 @@ def numbers_line(deck: Deck, k, line: int) -> str:
     if " | " in said:  # a split screen: the presenter's own line, which measures each half on its own
         halves = said.removeprefix("measured: ").split(" | ")
         return "[" + " · ".join(h.strip().replace("%", "\u00a0%") for h in halves) + cost + "]{.numbers}"
+    if isinstance(m.get("own_measure"), str):  # a frame that holds the lab's own measure, not visibility
+        return "[" + m["own_measure"] + cost + "]{.numbers}"
     parts = []
     for key, label, unit in NUMBER_LABELS:
         v = m.get(key)
