@@ -3,8 +3,10 @@
 // derived below, the reduction step with empty texels, and the fitted splits on clamped and empty
 // bounds. Layer 2: the field under each scheme against goldens, and the measure's numbers.
 #include "common/judge/harness.hpp"
+#include "common/judge/isolation.hpp"
 #include "common/platform/gl.hpp"
 #include "common/platform/image.hpp"
+#include "common/scene/scene.hpp"
 #include "exercise.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -447,7 +449,8 @@ TEST(Lab11, Ex11_H1_SceneCascadesFittedToTheFrame) {
 // --- The measure against the geometry -------------------------------------------------------------------
 // scenes/warp_plane.json: a flat ground, a sun straight above, the camera at target (0, 0, -10),
 // distance 8, yaw 20, pitch 25, fov 50 (OrbitCamera: eye = target + 8 (sin 20 cos 25, sin 25, cos 20
-// cos 25)), near 0.1, at 480x270; the uniform map covers the view's slice from 0.1 to 120 (the default
+// cos 25)), near 0.1, at 480x270 (the grader turns sun and camera a little: the test reads the scene
+// and turns it as the lab does); the uniform map covers the view's slice from 0.1 to 120 (the default
 // warp.shadow_distance). Worked out here from the geometry alone: the slice's corners in the light's
 // view (looking down, its y the view direction across the light) give the map's texel w_x by w_y; the
 // rays through neighbouring pixel centres meet the ground at X; a pixel step moves the map by
@@ -456,9 +459,13 @@ TEST(Lab11, Ex11_H1_SceneCascadesFittedToTheFrame) {
 // those candidates, widened by 0.2% for float: every ground pixel's measure must lie within it.
 namespace {
 struct PlaneTruth {
-  glm::dmat4 toWorld;  // clip to world
-  glm::dvec3 ex, ey;   // the map's axes in the world
-  double wx, wy;       // a texel's width along them
+  glm::dmat4 toWorld;   // clip to world
+  glm::dvec3 ex, ey;    // the map's axes in the world
+  double wx, wy;        // a texel's width along them
+  glm::dmat4 view;      // the camera's
+  glm::dvec3 back;      // from the target towards the eye (unit)
+  glm::dvec3 lightDir;  // the direction the light travels (unit)
+  double fov = 0;       // vertical, radians
   int width = 480, height = 270;
   glm::dvec3 ground(double px, double py) const {  // where the ray through pixel centre (px, py) meets y = 0
     const glm::dvec4 a = toWorld * glm::dvec4((px + 0.5) / width * 2 - 1, (py + 0.5) / height * 2 - 1, -1, 1);
@@ -471,23 +478,33 @@ struct PlaneTruth {
   }
 };
 
+// The plane scene as the lab draws it: under the grader's variations (WB_VARY_SEED), turned as the
+// lab turns it, so the geometry below is the varied one.
+wb::Scene planeScene() {
+  wb::Scene s = wb::Scene::load(wb::test::labArgs({}, "warp_plane.json").at(1));
+  if (wb::test::varySeed() >= 0) wb::varyScene(s, uint32_t(wb::test::varySeed()));
+  return s;
+}
+
 PlaneTruth planeTruth() {
   PlaneTruth t;
-  const double yaw = glm::radians(20.0), pitch = glm::radians(25.0);
-  const glm::dvec3 target(0, 0, -10);
-  const glm::dvec3 eye =
-      target + 8.0 * glm::dvec3(std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch));
-  const glm::dmat4 view = glm::lookAt(eye, target, glm::dvec3(0, 1, 0));
-  const double aspect = double(t.width) / t.height, fov = glm::radians(50.0);
-  t.toWorld = glm::inverse(glm::perspective(fov, aspect, 0.1, 200.0) * view);
-  const glm::dvec3 forward = glm::normalize(target - eye);
-  const glm::dmat4 light = glm::lookAt(glm::dvec3(0), glm::dvec3(0, -1, 0), forward);
+  const wb::Scene s = planeScene();
+  const wb::CameraBookmark& c = s.cameras.front();
+  const double yaw = glm::radians(double(c.yaw)), pitch = glm::radians(double(c.pitch));
+  const glm::dvec3 target(c.target);
+  t.back = glm::dvec3(std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch));
+  t.lightDir = glm::normalize(glm::dvec3(s.lights.front().direction));
+  t.view = glm::lookAt(target + double(c.distance) * t.back, target, glm::dvec3(0, 1, 0));
+  t.fov = glm::radians(double(c.fov));
+  const double aspect = double(t.width) / t.height;
+  t.toWorld = glm::inverse(glm::perspective(t.fov, aspect, 0.1, 200.0) * t.view);
+  const glm::dmat4 light = glm::lookAt(glm::dvec3(0), t.lightDir, -t.back);
   t.ex = glm::dvec3(light[0][0], light[1][0], light[2][0]), t.ey = glm::dvec3(light[0][1], light[1][1], light[2][1]);
-  const glm::dmat4 slice = glm::inverse(glm::perspective(fov, aspect, 0.1, 120.0) * view);
+  const glm::dmat4 slice = glm::inverse(glm::perspective(t.fov, aspect, 0.1, 120.0) * t.view);
   glm::dvec2 lo(1e30), hi(-1e30);
   for (int k = 0; k < 8; ++k) {
-    const glm::dvec4 c = slice * glm::dvec4(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1, 1);
-    const glm::dvec3 p = glm::dvec3(c) / c.w;
+    const glm::dvec4 q = slice * glm::dvec4(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1, 1);
+    const glm::dvec3 p = glm::dvec3(q) / q.w;
     const glm::dvec2 l(glm::dot(p, t.ex), glm::dot(p, t.ey));
     lo = glm::min(lo, l), hi = glm::max(hi, l);
   }
@@ -534,8 +551,8 @@ void expectPlaneMeasureWithinGeometry(const std::string& name, const std::string
 }
 }  // namespace
 
-// The same plane under LiSPSM at n_opt (warp.scheme=lispsm, strength 1: sin g = cos 25 degrees is
-// past the fade): the map coordinate is the perspective of section 3, built here in double from the
+// The same plane under LiSPSM at n_opt (warp.scheme=lispsm, strength 1: sin g, about cos 25 degrees,
+// is past the fade): the map coordinate is the perspective of section 3, built here in double from the
 // handout's definition (the slice's light-space bounds, n_opt from z0 = 0.1 and d, the eye n before
 // the body on its x centre, x fitted after the divide), and a pixel step moves it by its Jacobian at
 // the pixel (a central difference in double) times the step on the ground.
@@ -558,12 +575,9 @@ struct WarpedPlane {
 WarpedPlane warpedPlane() {
   WarpedPlane w;
   w.plane = planeTruth();
-  const double yaw = glm::radians(20.0), pitch = glm::radians(25.0);
-  const glm::dvec3 back(std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch));
-  const glm::dvec3 eye = glm::dvec3(0, 0, -10) + 8.0 * back;
-  const glm::dmat4 view = glm::lookAt(eye, glm::dvec3(0, 0, -10), glm::dvec3(0, 1, 0));
-  w.light = glm::lookAt(glm::dvec3(0), glm::dvec3(0, -1, 0), -back);
-  const glm::dmat4 slice = glm::inverse(glm::perspective(glm::radians(50.0), 480.0 / 270, 0.1, 120.0) * view);
+  const PlaneTruth& t = w.plane;
+  w.light = glm::lookAt(glm::dvec3(0), t.lightDir, -t.back);
+  const glm::dmat4 slice = glm::inverse(glm::perspective(t.fov, 480.0 / 270, 0.1, 120.0) * t.view);
   std::vector<glm::dvec3> body;
   glm::dvec3 lo(1e30), hi(-1e30);
   for (int k = 0; k < 8; ++k) {
@@ -571,8 +585,9 @@ WarpedPlane warpedPlane() {
     body.push_back(glm::dvec3(w.light * glm::dvec4(glm::dvec3(c) / c.w, 1)));
     lo = glm::min(lo, body.back()), hi = glm::max(hi, body.back());
   }
-  const double sinGamma = std::cos(pitch), d = hi.y - lo.y, z1 = 0.1 + d * sinGamma;
-  w.n = (0.1 + std::sqrt(0.1 * z1)) / sinGamma, w.lowY = lo.y, w.cx = 0.5 * (lo.x + hi.x);
+  const double sinGamma = glm::length(glm::cross(-t.back, t.lightDir)), d = hi.y - lo.y, z1 = 0.1 + d * sinGamma;
+  const double fade = std::clamp((sinGamma - 0.02) / (0.5 - 0.02), 0.0, 1.0);  // (1 here: the view is steep)
+  w.n = (0.1 + std::sqrt(0.1 * z1)) / sinGamma / fade, w.lowY = lo.y, w.cx = 0.5 * (lo.x + hi.x);
   const double f = w.n + d;
   w.a = (f + w.n) / (f - w.n), w.b = -2 * f * w.n / (f - w.n);
   double xl = 1e30, xh = -1e30;
