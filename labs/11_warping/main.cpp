@@ -229,12 +229,16 @@ class WarpLab : public wb::Lab {
     return line;
   }
 
-  // PASS 2's program for the view (one per view: llvmpipe runs both sides of a branch).
+  // PASS 2's program for the view and the number of maps (one per combination: llvmpipe runs both
+  // sides of a branch, and every turn of a loop, even on a uniform).
   const wb::Program& sceneVariant() {
-    const char* defines[] = {"", "#define WB_VIEW_DENSITY\n", "#define WB_VIEW_PERSPECTIVE\n",
-                             "#define WB_VIEW_PROJECTIVE\n"};
-    wb::Program*& p = scenePrograms[view];
-    if (!p) p = &loadProgram({{GL_VERTEX_SHADER, "warp.vert"}, {GL_FRAGMENT_SHADER, "scene.frag"}}, defines[view]);
+    const char* views[] = {"", "#define WB_VIEW_DENSITY\n", "#define WB_VIEW_PERSPECTIVE\n",
+                           "#define WB_VIEW_PROJECTIVE\n"};
+    const bool cascades = scheme >= kCsm;
+    wb::Program*& p = scenePrograms[2 * view + (cascades ? 1 : 0)];
+    if (!p)
+      p = &loadProgram({{GL_VERTEX_SHADER, "warp.vert"}, {GL_FRAGMENT_SHADER, "scene.frag"}},
+                       std::string(views[view]) + (cascades ? "#define WB_CASCADES\n" : ""));
     return *p;
   }
 

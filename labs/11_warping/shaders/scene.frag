@@ -3,6 +3,7 @@
 // looks it up (the sampler's 2x2 comparison), or, in a measuring view, writes the aliasing measure
 // instead of visibility: texels per pixel (11.1, WB_VIEW_DENSITY) or one of its two parts (11.2,
 // WB_VIEW_PERSPECTIVE, WB_VIEW_PROJECTIVE), over the ground alone (elsewhere 0: not counted).
+// WB_CASCADES: more than one map.
 // llvmpipe runs both sides of every branch, so each view is compiled in by #define.
 #include "exercise.glsl"
 #include "wb/lighting.glsl"
@@ -77,10 +78,11 @@ void main() {
     return;
   }
   int i = cascadeAt(v_depth);
-  // A pixel outside its cascade's map reads the next cascade whose map holds it (a coarser one, never
-  // a pixel lit for want of a map); where none does, the last.
+#ifdef WB_CASCADES  // a pixel outside its cascade's map reads the next cascade whose map holds it (a
+                    // coarser one, never a pixel lit for want of a map); where none does, the last
   for (int k = 0; k < 3; ++k)
     if (i + 1 < u_count && !inMap(i)) i += 1;
+#endif
   vec4 c = v_light[i];
 #if defined(WB_VIEW_DENSITY)
   vec2 t = texelsPerPixel(uvAlong(i, c, dFdx(v_world)), uvAlong(i, c, dFdy(v_world)), u_mapTexels);
