@@ -275,10 +275,12 @@ const double kMaxFraction = 0.01;
 TEST(Lab11, Ex11_3_SceneFieldLispsm) {
   wb::test::expectSceneMatchesGolden("11.3", "field_lispsm", wb::test::labArgs({}), kTol, kMaxFraction);
 }
+// (A C++ exercise's scenes leave out LiSPSM fitted to the frame: there the warp's n follows the frame's
+// nearest depth, and the floats of a submission's own build move enough texels to flip about 1% of the
+// pixels against the reference's build; the grader found the solution 1.37% off. 11.5, GLSL, keeps it.)
 TEST(Lab11, Ex11_3_SceneOrchardTowardTheSun) {
-  wb::test::expectSceneMatchesGolden("11.3", "orchard_toward_sun",
-                                     wb::test::labArgs({"light.orbit=180", "warp.sdsm=on"}, "warp_orchard.json"), kTol,
-                                     kMaxFraction);
+  wb::test::expectSceneMatchesGolden("11.3", "orchard_lispsm",
+                                     wb::test::labArgs({"light.orbit=180"}, "warp_orchard.json"), kTol, kMaxFraction);
 }
 TEST(Lab11, Ex11_4_SceneFieldUniform) {
   wb::test::expectSceneMatchesGolden("11.4", "field_uniform", wb::test::labArgs({"warp.scheme=uniform"}), kTol,
@@ -305,8 +307,8 @@ TEST(Lab11, Ex11_6_SceneFieldCascades) {
   wb::test::expectSceneMatchesGolden("11.6", "field_csm", wb::test::labArgs({"warp.scheme=csm"}), kTol, kMaxFraction);
 }
 TEST(Lab11, Ex11_6_SceneFieldSdsm) {
-  wb::test::expectSceneMatchesGolden("11.6", "field_lispsm_sdsm", wb::test::labArgs({"warp.sdsm=on"}), kTol,
-                                     kMaxFraction);
+  wb::test::expectSceneMatchesGolden("11.6", "field_uniform_sdsm",
+                                     wb::test::labArgs({"warp.scheme=uniform", "warp.sdsm=on"}), kTol, kMaxFraction);
 }
 
 // The measure over the ground (a measuring view writes it where the visibility goes, 0 on every
