@@ -275,9 +275,10 @@ const double kMaxFraction = 0.01;
 TEST(Lab11, Ex11_3_SceneFieldLispsm) {
   wb::test::expectSceneMatchesGolden("11.3", "field_lispsm", wb::test::labArgs({}), kTol, kMaxFraction);
 }
-// (A C++ exercise's scenes leave out LiSPSM fitted to the frame: there the warp's n follows the frame's
-// nearest depth, and the floats of a submission's own build move enough texels to flip about 1% of the
-// pixels against the reference's build; the grader found the solution 1.37% off. 11.5, GLSL, keeps it.)
+// (A C++ exercise's scenes leave out SDSM: under the grader's variations, the solution graded as a
+// submission differed from the reference on 1.05% to 3.42% of such a scene's pixels, from one grading
+// run to the next (cause not found yet). 11.6 and 11.H1 are decided by their layer-1, held-out and
+// measured tests; 11.5, GLSL, keeps its SDSM scenes, which graded clean.)
 TEST(Lab11, Ex11_3_SceneOrchardTowardTheSun) {
   wb::test::expectSceneMatchesGolden("11.3", "orchard_lispsm",
                                      wb::test::labArgs({"light.orbit=180"}, "warp_orchard.json"), kTol, kMaxFraction);
@@ -305,10 +306,6 @@ TEST(Lab11, Ex11_5_SceneOrchardSdsm) {
 }
 TEST(Lab11, Ex11_6_SceneFieldCascades) {
   wb::test::expectSceneMatchesGolden("11.6", "field_csm", wb::test::labArgs({"warp.scheme=csm"}), kTol, kMaxFraction);
-}
-TEST(Lab11, Ex11_6_SceneFieldSdsm) {
-  wb::test::expectSceneMatchesGolden("11.6", "field_uniform_sdsm",
-                                     wb::test::labArgs({"warp.scheme=uniform", "warp.sdsm=on"}), kTol, kMaxFraction);
 }
 
 // The measure over the ground (a measuring view writes it where the visibility goes, 0 on every
@@ -423,30 +420,11 @@ TEST(Lab11, Ex11_H1_SwitchWhereTheMapsWereFitted) {
   }
 }
 
-// The scenario: three cascades fitted to the field's frame, logarithmic splits: the median texels per
-// pixel over the ground must be at least 1.15 times that of the same cascades between near and far
-// (the solution at 480x270: 1.01 and 0.775, 1.30 times; the bug as handed out: 0.838, 1.08 times).
-TEST(Lab11, Ex11_H1_MeasuredSdsmGivesMoreTexels) {
-  std::string failure;
-  const std::vector<std::string> common = {"warp.view=density", "warp.scheme=csm", "csm.lambda=1"};
-  auto with = [&](const char* sdsm) {
-    std::vector<std::string> s = common;
-    s.push_back(std::string("warp.sdsm=") + sdsm);
-    return s;
-  };
-  const double off = groundQuantile("11.H1", "csm_sdsm_off", with("off"), failure);
-  const double on = groundQuantile("11.H1", "csm_sdsm_on", with("on"), failure);
-  if (!failure.empty()) FAIL() << failure;
-  EXPECT_GT(on, 1.15 * off) << "WRONG: three cascades fitted to the frame give the ground a median of " << on
-                            << " texels per pixel, and between near and far " << off
-                            << ": fitting to the frame must give more";
-}
-
-TEST(Lab11, Ex11_H1_SceneCascadesFittedToTheFrame) {
-  wb::test::expectSceneMatchesGolden("11.H1", "field_csm_sdsm",
-                                     wb::test::labArgs({"warp.scheme=csm", "warp.sdsm=on", "csm.lambda=1"}), kTol,
-                                     kMaxFraction);
-}
+// The scenario's symptom (the median texels per pixel with SDSM against without: 1.01 and 0.775 at
+// 480x270 for the reference, 0.838 with the bug; README.md) is measured in the handout, not here:
+// under the grader's scene variations the reference itself measured less with SDSM than without in two
+// of three grading runs (cause not found yet), so the test above decides the hunt; every wrong fix
+// fails it.
 
 // --- The measure against the geometry -------------------------------------------------------------------
 // scenes/warp_plane.json: a flat ground, a sun straight above, the camera at target (0, 0, -10),
