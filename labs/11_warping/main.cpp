@@ -110,7 +110,6 @@ class WarpLab : public wb::Lab {
     p.set("u_biasDepth", biasSpace ? biasDepth : 0.0f);
     gpuScene->draw(p);
     glBindSampler(1, 0);
-    if (view != 0 && ++framesSinceStats >= 20) framesSinceStats = 0, stats = groundStats();  // (the Settings window)
   }
 
   // In a measuring view, --metrics, the Measure button and a presenter step give the measure's numbers
@@ -121,8 +120,12 @@ class WarpLab : public wb::Lab {
     return f;
   }
 
+  // The Settings window (a window only: headless runs read nothing back) shows the measure's numbers,
+  // read back every 20 frames.
   void ui() override {
-    if (view != 0) ImGui::TextWrapped("%s", stats.c_str());
+    if (view == 0) return;
+    if (++framesSinceStats >= 20 || stats.empty()) framesSinceStats = 0, stats = groundStats();
+    ImGui::TextWrapped("%s", stats.c_str());
   }
 
  private:
