@@ -131,7 +131,9 @@ static std::vector<std::string> runnerArgs(const std::vector<std::string>& args)
 // the judge grades on its own, cannot stop the C++ exercises' runs.
 static Env recordEnv() {
   const char* stubs = std::getenv("WB_RECORD_SHADERS");
-  if (stubs && *stubs) return {{"WB_STRICT_GL", "1"}, {"WB_SHADER_OVERLAY", stubs}};
+  // (WB_GLSL_STUBBED: framework steps whose results a C++ exercise takes, such as SDSM's depth
+  // bounds, then run their own CPU equivalent of the stubbed GLSL exercise, depth_bounds.cpp)
+  if (stubs && *stubs) return {{"WB_STRICT_GL", "1"}, {"WB_SHADER_OVERLAY", stubs}, {"WB_GLSL_STUBBED", "1"}};
   return {{"WB_STRICT_GL", "1"}};
 }
 

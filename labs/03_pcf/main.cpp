@@ -1,7 +1,7 @@
 // Lab 03: PCF, percentage-closer filtering
 // ---------------------------------------------------------------------------------------------
 // Difficulty: 2/5. Handout: README.md beside this file.
-// Exercises:  03.1 - 03.5, all in shaders/exercise.glsl.
+// Exercises:  03.1 - 03.5 and hunts 03.H1 - 03.H2, all in shaders/exercise.glsl.
 // Controls:   drag to orbit, wheel to zoom, 1-9 camera bookmarks, F12 screenshot.
 // A shadow map answers "lit or not" per texel, so its edges are as blocky as its texels. PCF
 // averages the answers of several nearby texels: the edge becomes a ramp whose width is the filter
@@ -22,7 +22,9 @@ class PcfLab : public wb::Lab {
     settings.add("pcf.sigma", sigma, 0.25f, 4.0f, "gaussian: standard deviation in texels");
     settings.addChoice("pcf.poisson_count", poissonCount, {"16", "32", "64"}, "poisson: taps");
     settings.add("pcf.poisson_radius", poissonRadius, 0.5f, 8.0f, "poisson: disk radius in texels");
-    useDepthBias(0.006f);  // wider kernels reach further across sloped receivers
+    // A single tap's bias; each filter scales it by how far its taps reach (03.H2), since wider
+    // kernels compare further along sloped receivers.
+    useDepthBias(0.003f, 0.05f, "depth bias of a single tap, subtracted from the receiver depth; filters scale it");
   }
 
  protected:
@@ -38,6 +40,7 @@ class PcfLab : public wb::Lab {
     glslExercise("03.4", "exercise.glsl", "pcfPoisson(wb_tex0, vec3(0.5), 16, 1.0, uvec2(0u), 0.0)");
     glslExercise("03.5", "exercise.glsl", "pcfGather(wb_tex0, vec3(0.5), 1, 0.0)");
     glslExercise("03.H1", "exercise.glsl", "insideShadowMap(vec3(0.5)) ? 1.0 : 0.0");  // a bug hunt: never a stub
+    glslExercise("03.H2", "exercise.glsl", "filterBias(1.0, 1.0)");                    // a bug hunt too
     // The hardware filter reads the same depth texture through a sampler that compares.
     compareSampler = wb::makeComparisonSampler();
   }

@@ -242,3 +242,29 @@ TEST(Lab03, Ex03_H1_MeasuredNoShadowBeyondTheLampsReach) {
 TEST(Lab03, Ex03_H1_SceneShortLamp) {
   wb::test::expectSceneMatchesGolden("03.H1", "hunt_short_lamp", shortLamp(), kTol, kMaxFraction);
 }
+
+// --- Bug hunt 03.H2: "acne when the filter is one tap wide" -----------------------------------------
+// The contract (exercise.glsl): shadow.bias is a single tap's, and each texel a filter's taps reach
+// along an axis of the map needs one more of it. Values at reaches 0 to 7, the handed-out bug's
+// "none at all for one tap" first.
+TEST_F(GlTest, Ex03_H2_BiasGrowsWithTheReach) {
+  const std::vector<glm::vec4> in = {{0.003f, 0.0f, 0, 0}, {0.003f, 1.0f, 0, 0}, {0.002f, 2.5f, 0, 0},
+                                     {0.01f, 7.0f, 0, 0},  {0.003f, 0.5f, 0, 0}, {0.0f, 3.0f, 0, 0}};
+  std::vector<glm::vec4> got;
+  WB_RUN_GLSL(got, "03.H2", "result.x = filterBias(IN(0).x, IN(0).y);", int(in.size()), 1, in, {});
+  for (size_t k = 0; k < in.size(); ++k)
+    ASSERT_NEAR(got[k].x, in[k].x * (1.0 + in[k].y), 1e-7 + 1e-5 * in[k].x * (1.0 + in[k].y))
+        << "WRONG: a single tap's bias " << in[k].x << ", taps reaching " << in[k].y
+        << " texels: one more bias per texel of reach";
+}
+
+// Judged against exact visibility: one tap (pcf.kernel=1) must show no acne, and the widest grid must
+// show neither acne (too little bias for its reach) nor the leaks of far too much.
+TEST(Lab03, Ex03_H2_MeasuredNoAcneWithOneTap) {
+  wb::test::expectSymptomGone("03.H2", "hunt_one_tap", wb::test::labArgs({"pcf.method=grid", "pcf.kernel=1"}),
+                              {1.0, 10.0});
+}
+TEST(Lab03, Ex03_H2_MeasuredNoAcneWithTheWidestGrid) {
+  wb::test::expectSymptomGone("03.H2", "hunt_wide_grid",
+                              wb::test::labArgs({"pcf.method=grid", "pcf.kernel=7", "pcf.spacing=2"}), {1.0, 35.0});
+}

@@ -24,7 +24,7 @@ bundle="$tmp/repo/tools/grading/gradescope/bundle.sh"
 zip="$tmp/repo/autograder.zip"  # inside the repository, so a second run could pick the first up
 "$bundle" "$zip" --labs 03 >"$tmp/first.out" 2>&1 || fail "the first bundle failed: $(cat "$tmp/first.out")"
 "$bundle" "$zip" --labs 03 >"$tmp/second.out" 2>&1 || fail "the second bundle failed: $(cat "$tmp/second.out")"
-grep -q "set its total to 110 points" "$tmp/second.out" || fail "the bundle does not give lab 03's total: $(cat "$tmp/second.out")"
+grep -q "set its total to 120 points" "$tmp/second.out" || fail "the bundle does not give lab 03's total: $(cat "$tmp/second.out")"
 /usr/bin/python3 -B - "$zip" "$tmp/repo" <<'PY' || failures=$((failures + 1))
 import subprocess, sys, zipfile
 z = zipfile.ZipFile(sys.argv[1])
@@ -77,7 +77,7 @@ done
 
 # Two labs: their total, and both in gradescope-labs.
 "$bundle" "$tmp/two.zip" --labs 3,04 >"$tmp/two.out" 2>&1 || fail "--labs 3,04 failed: $(cat "$tmp/two.out")"
-grep -q "set its total to 220 points" "$tmp/two.out" || fail "the two-lab bundle's total: $(cat "$tmp/two.out")"
+grep -q "set its total to 230 points" "$tmp/two.out" || fail "the two-lab bundle's total: $(cat "$tmp/two.out")"
 [ "$(/usr/bin/python3 -c 'import sys, zipfile; print(zipfile.ZipFile(sys.argv[1]).read("gradescope-labs").decode().strip())' "$tmp/two.zip")" = "03,04" ] ||
   fail "gradescope-labs of --labs 3,04 is not 03,04"
 if "$bundle" "$tmp/none.zip" --labs 42 >"$tmp/none.out" 2>&1; then fail "--labs 42 (no such lab) made a bundle"; fi

@@ -59,3 +59,14 @@ bool insideShadowMap(vec3 coord) {
   bvec2 low = greaterThanEqual(coord.xy, vec2(0.0)), high = lessThanEqual(coord.xy, vec2(1.0));
   return all(low) && all(high);
 }
+
+// EXERCISE 03.H2: bug hunt, "acne when the filter is one tap wide" (README.md, Bug hunt 03.H2).
+// Not a stub: this is the lab's working code, and it has a bug that shipped in a real engine. Find it
+// from the symptom; the handout says how to see it and how it is measured.
+// The bias the scene pass gives a filter whose taps reach up to `reachTexels` texels from the point
+// along either axis of the map (0: a single tap), where `bias` (shadow.bias) is what a single tap
+// needs. A tap further away reads the receiver's surface further along its slope, so each texel of
+// reach needs one more `bias`.
+float filterBias(float bias, float reachTexels) {
+  return bias * reachTexels;
+}

@@ -29,16 +29,20 @@ void main() {
   vec4 clip = u_lightViewProj * vec4(v_world, 1.0);
   vec3 coord = clip.xyz / clip.w * 0.5 + 0.5;
   // One program per filter (the lab injects PCF_METHOD), so no pixel pays for the branches it skips.
+  // Each filter's bias grows with how far its taps reach from the point, in texels along an axis
+  // (03.H2): the hardware's 2 x 2 reaches one texel, a grid radius * spacing.
 #if PCF_METHOD == 1
-  float visibility = pcfHardware(u_shadowCompare, coord, u_bias);
+  float visibility = pcfHardware(u_shadowCompare, coord, filterBias(u_bias, 1.0));
 #elif PCF_METHOD == 2
-  float visibility = pcfGaussian(u_shadowMap, coord, u_radius, u_spacing, u_sigma, u_bias);
+  float bias = filterBias(u_bias, float(u_radius) * u_spacing);
+  float visibility = pcfGaussian(u_shadowMap, coord, u_radius, u_spacing, u_sigma, bias);
 #elif PCF_METHOD == 3
-  float visibility = pcfPoisson(u_shadowMap, coord, u_poissonCount, u_poissonRadius, uvec2(gl_FragCoord.xy), u_bias);
+  float bias = filterBias(u_bias, u_poissonRadius);
+  float visibility = pcfPoisson(u_shadowMap, coord, u_poissonCount, u_poissonRadius, uvec2(gl_FragCoord.xy), bias);
 #elif PCF_METHOD == 4
-  float visibility = pcfGather(u_shadowMap, coord, u_radius, u_bias);
+  float visibility = pcfGather(u_shadowMap, coord, u_radius, filterBias(u_bias, float(u_radius)));
 #else
-  float visibility = pcfGrid(u_shadowMap, coord, u_radius, u_spacing, u_bias);
+  float visibility = pcfGrid(u_shadowMap, coord, u_radius, u_spacing, filterBias(u_bias, float(u_radius) * u_spacing));
 #endif
   // Beyond the map (its uv square, or past the light's near and far planes) nothing is known: lit.
   if (!wbIsTodo(visibility) && !insideShadowMap(coord)) visibility = 1.0;
