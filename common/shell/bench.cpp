@@ -33,7 +33,7 @@ std::vector<std::string> header(const Options& o, const std::vector<std::string>
   for (const auto& sw : o.sweeps) h.push_back(sw.first);
   if (o.metrics)
     h.insert(h.end(), {"acne_%", "leak_%", "contact_gap_texels", "shadow_light_%", "pcf_diff_%", "pcf_lighter_%",
-                       "area_diff_%", "area_off_%"});
+                       "area_diff_%", "area_off_%", "texels_per_pixel"});
   if (o.metrics && seams) h.insert(h.end(), {"seam_err_%", "rest_err_%"});
   for (const auto& p : passes) h.push_back(p + "_gpu_ms");  // in the median round (below)
   // The frame's median over the rounds and its spread (fastest, slowest round), and the frame the
@@ -51,7 +51,8 @@ std::vector<std::string> measuredCells(const MeasureResult& m, bool seams) {
                                  ref ? strf("%.2f", 100 * m.reference.meanAbs()) : "n/a",
                                  ref ? strf("%.2f", 100 * m.reference.lighterRate()) : "n/a",
                                  area ? strf("%.2f", 100 * m.area.meanAbs()) : "n/a",
-                                 area ? strf("%.2f", 100 * (m.area.lighterRate() + m.area.darkerRate())) : "n/a"};
+                                 area ? strf("%.2f", 100 * (m.area.lighterRate() + m.area.darkerRate())) : "n/a",
+                                 m.texelsPerPixel < 0 ? "n/a" : strf("%.3f", m.texelsPerPixel)};
   if (seams)
     cells.insert(cells.end(), {strf("%.2f", 100 * m.seams.seam.meanAbs()), strf("%.2f", 100 * m.seams.rest.meanAbs())});
   return cells;

@@ -40,6 +40,7 @@ nlohmann::json MeasureResult::toJson() const {
                       {"rim_pixels", metrics.rimPixels},
                       {"outline_pixels", metrics.outlinePixels},
                       {"outline_texel_pixels", outlineTexelPixels},
+                      {"texels_per_pixel_median", nullptr},
                       {"wrong_outside_rim_percent", 100 * metrics.wrongOutsideRimRate()},
                       {"contact_gap_texels", nullptr},
                       {"pcf_diff_percent", nullptr},
@@ -47,6 +48,7 @@ nlohmann::json MeasureResult::toJson() const {
                       {"todo_pixels", todoPixels},
                       {"notes", notes}};
   if (gapTexels >= 0) j["contact_gap_texels"] = gapTexels;
+  if (texelsPerPixel >= 0) j["texels_per_pixel_median"] = texelsPerPixel;
   if (reference.pixels > 0) {
     j["pcf_diff_percent"] = 100 * reference.meanAbs();
     j["pcf_lighter_percent"] = 100 * reference.lighterRate();
@@ -222,6 +224,7 @@ MeasureResult Measurement::measure(const MeasureInput& in) {
   MeasureResult r;
   r.metrics = compareVisibility(rendered, exact, positions);
   r.outlineTexelPixels = outlineTexelPixels(in.light, positions, w, h, outlineMask(exact, positions));
+  r.texelsPerPixel = medianTexelsPerPixel(in.light, positions, w, h);
   for (float v : rendered.pixels) r.todoPixels += isTodo(v);  // a stub's pattern
   const std::string why = whyNotOrthographic2D(in.light);
   if (why.empty())

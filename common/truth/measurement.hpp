@@ -32,6 +32,9 @@ struct MeasureResult {
   /// The sum, over the exact shadow's outline, of one map texel's size in pixels there
   /// (outlineTexelPixels): how far the map alone may move the drawn area (0 without a map).
   double outlineTexelPixels = 0;
+  /// The median texels per pixel over the light-facing pixels a map holds (medianTexelsPerPixel; -1
+  /// without a map).
+  double texelsPerPixel = -1;
   /// One half of a split-screen frame, measured on its own.
   struct Half {
     std::string setting;            ///< "key=value" that half shows
@@ -47,7 +50,7 @@ struct MeasureResult {
   /// edges), contact_gap_texels (null when not defined), pcf_diff_percent and pcf_lighter_percent (null when not
   /// defined), area_mean_abs_percent and area_off_percent (null for a point light; over the pixels where the frame or
   /// the area-light reference is below 1), penumbra (rows), seam_error_percent, rest_error_percent and seam_pixels
-  /// (null unless the light has a cube map).
+  /// (null unless the light has a cube map), texels_per_pixel_median (null without a map).
   nlohmann::json toJson() const;
 };
 

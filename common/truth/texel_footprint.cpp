@@ -33,12 +33,21 @@ bool step(const std::vector<glm::vec4>& positions, int width, int height, int x,
   return found;
 }
 
+// The pixel → texel Jacobian's columns of map `k` at world point `p`, whose screen neighbours lie
+// `ex`, `ey` away: the texels one pixel step right (a) and up (b) moves; false outside the map.
+bool jacobian(const LightView& light, size_t k, const glm::vec3& p, const glm::vec3& ex, const glm::vec3& ey,
+              glm::dvec2& a, glm::dvec2& b) {
+  glm::dvec2 t, tx, ty;
+  if (!toTexels(light.viewProj[k], light.size, p, t)) return false;
+  toTexels(light.viewProj[k], light.size, p + ex, tx), toTexels(light.viewProj[k], light.size, p + ey, ty);
+  a = tx - t, b = ty - t;
+  return true;
+}
+
 // One texel of map `k` on screen at world point `p`, whose screen neighbours lie `ex`, `ey` away.
 double footprint(const LightView& light, size_t k, const glm::vec3& p, const glm::vec3& ex, const glm::vec3& ey) {
-  glm::dvec2 t, tx, ty;
-  if (!toTexels(light.viewProj[k], light.size, p, t)) return 0;
-  toTexels(light.viewProj[k], light.size, p + ex, tx), toTexels(light.viewProj[k], light.size, p + ey, ty);
-  const glm::dvec2 a = tx - t, b = ty - t;  // the pixel → texel Jacobian's columns
+  glm::dvec2 a, b;
+  if (!jacobian(light, k, p, ex, ey, a, b)) return 0;
   const double sum = glm::dot(a, a) + glm::dot(b, b), det = a.x * b.y - a.y * b.x;
   const double smallest = std::sqrt(std::max(0.0, 0.5 * (sum - std::sqrt(std::max(0.0, sum * sum - 4 * det * det)))));
   return smallest > 0 ? std::min(kMaxTexelPixels, 1 / smallest) : kMaxTexelPixels;
@@ -75,6 +84,34 @@ double texelPixels(const LightView& light, const std::vector<glm::vec4>& positio
   double most = 0;
   for (size_t k = first; k < last; ++k) most = std::max(most, footprint(light, k, p, ex, ey));
   return most;
+}
+
+double texelsPerPixel(const LightView& light, const std::vector<glm::vec4>& positions, int width, int height, int x,
+                      int y) {
+  const glm::vec4& q = positions[size_t(y) * size_t(width) + size_t(x)];
+  glm::vec3 ex, ey;
+  if (!light.hasMap() || light.size <= 0 || q.w == 0 || !step(positions, width, height, x, y, 1, 0, ex) ||
+      !step(positions, width, height, x, y, 0, 1, ey))
+    return 0;
+  const glm::vec3 p(q);
+  const bool cascades = !light.outlines.empty() && light.outlines.size() == light.viewProj.size();
+  const int slice = cascades ? sliceOf(light, p) : -1;
+  if (cascades && slice < 0) return 0;
+  for (size_t k = cascades ? size_t(slice) : 0; k < light.viewProj.size(); ++k) {
+    glm::dvec2 a, b;
+    if (jacobian(light, k, p, ex, ey, a, b)) return std::min(glm::length(a), glm::length(b));
+  }
+  return 0;
+}
+
+double medianTexelsPerPixel(const LightView& light, const std::vector<glm::vec4>& positions, int width, int height) {
+  std::vector<double> all;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      if (const double t = texelsPerPixel(light, positions, width, height, x, y); t > 0) all.push_back(t);
+  if (all.empty()) return -1;
+  std::nth_element(all.begin(), all.begin() + std::ptrdiff_t(all.size() / 2), all.end());
+  return all[all.size() / 2];
 }
 
 double outlineTexelPixels(const LightView& light, const std::vector<glm::vec4>& positions, int width, int height,

@@ -25,6 +25,16 @@ constexpr double kMaxTexelPixels = 64;
 double texelPixels(const LightView& light, const std::vector<glm::vec4>& positions, int width, int height, int x,
                    int y);
 
+/// Texels per pixel at pixel (x, y), lab 11's measure: min(tx, ty), where tx and ty are how many texels
+/// of the map a step of one pixel right and up moves (from the neighbours' world positions, through
+/// the map's matrix, after its divide), in the map the pixel is drawn from: its slice's cascade, or
+/// the first map whose clip box holds it. 0 where no map holds it.
+double texelsPerPixel(const LightView& light, const std::vector<glm::vec4>& positions, int width, int height, int x,
+                      int y);
+
+/// The median of texelsPerPixel over the light-facing pixels that a map holds; -1 where none does.
+double medianTexelsPerPixel(const LightView& light, const std::vector<glm::vec4>& positions, int width, int height);
+
 /// The sum of texelPixels over the pixels where `outline` is 1: how many pixels the drawn shadow's
 /// area may gain or lose when the map moves every edge by one texel.
 double outlineTexelPixels(const LightView& light, const std::vector<glm::vec4>& positions, int width, int height,

@@ -78,4 +78,34 @@ TEST(TexelFootprint, TheOutlineSumAddsItsPixelsOnly) {
   EXPECT_NEAR(wb::outlineTexelPixels(oneMap(100, 1000), pos, kW, kH, outline), 6.0, 1e-2);
 }
 
+// Texels per pixel, lab 11's measure, for the showcase's table: the shorter of a pixel step's moves
+// through the map the pixel is drawn from (its own cascade, not the coarser of two).
+TEST(TexelFootprint, TexelsPerPixelIsTheShorterStepInThePixelsOwnMap) {
+  const auto pos = ground(0.05f);  // 0.1 world units a texel, 0.05 a pixel: half a texel a pixel
+  EXPECT_NEAR(wb::texelsPerPixel(oneMap(100, 1000), pos, kW, kH, 10, 10), 0.5, 1e-3);
+  wb::LightView stretched = oneMap(100, 1000);  // x's texels 4x wider: 0.125 texels a pixel that way
+  stretched.viewProj[0] = glm::scale(glm::mat4(1), glm::vec3(0.25f, 1, 1)) * stretched.viewProj[0];
+  EXPECT_NEAR(wb::texelsPerPixel(stretched, pos, kW, kH, 10, 10), 0.125, 1e-3);
+  EXPECT_NEAR(wb::medianTexelsPerPixel(oneMap(100, 1000), pos, kW, kH), 0.5, 1e-3);
+  EXPECT_EQ(wb::medianTexelsPerPixel(oneMap(10, 100), ground(1.0f), kW, kH) > 0, true);  // (part of the frame)
+  wb::LightView none = oneMap(100, 1000);
+  none.texture = 0;
+  EXPECT_EQ(wb::medianTexelsPerPixel(none, pos, kW, kH), -1.0);
+}
+
+TEST(TexelFootprint, TexelsPerPixelReadsTheSlicesOwnCascade) {
+  wb::LightView v = oneMap(100, 2000);  // cascade 0: one texel a pixel; cascade 1: a quarter
+  v.viewProj.push_back(glm::scale(glm::mat4(1), glm::vec3(0.25f, 0.25f, 1)) * mapAbove(-1, 100));
+  v.target = GL_TEXTURE_2D_ARRAY;
+  auto slice = [](float z0, float z1) {
+    return std::array<glm::vec3, 8>{glm::vec3(0, -1, z0), glm::vec3(9, -1, z0), glm::vec3(9, 1, z0),
+                                    glm::vec3(0, 1, z0),  glm::vec3(0, -1, z1), glm::vec3(9, -1, z1),
+                                    glm::vec3(9, 1, z1),  glm::vec3(0, 1, z1)};
+  };
+  v.outlines = {slice(0, 1), slice(1, 3)};
+  const auto pos = ground(0.05f);  // rows 0..20 lie in slice 0, 21..47 in slice 1
+  EXPECT_NEAR(wb::texelsPerPixel(v, pos, kW, kH, 10, 10), 1.0, 1e-3);
+  EXPECT_NEAR(wb::texelsPerPixel(v, pos, kW, kH, 10, 40), 0.25, 1e-3);
+}
+
 }  // namespace

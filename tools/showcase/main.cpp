@@ -44,7 +44,7 @@ const std::vector<Technique> kTechniques = {
     {"cube_map", "08_cube_maps", {"light.index=1", "cube.filter=pcf", "cube.cache=off"}, ""},  // six faces every frame
     {"volumes", "09_shadow_volumes", {}, ""},
     {"cascades", "10_cascades", {"light.index=2", "csm.shadow_distance=30", "csm.lambda=0.3"}, "csm.kernel"},
-    {"lispsm", "11_warping", {"light.index=2", "warp.shadow_distance=30", "warp.scheme=lispsm", "warp.sdsm=on"}, ""},
+    {"lispsm", "11_warping", {"light.index=2", "warp.shadow_distance=30", "warp.scheme=lispsm"}, ""},
     {"sdsm",
      "11_warping",
      {"light.index=2", "warp.shadow_distance=30", "warp.scheme=csm", "warp.sdsm=on", "csm.lambda=1"},

@@ -73,11 +73,12 @@ def frame(row):
 
 def main_table(rows):
     lines = ["| technique | GPU ms per pass (of the frame they were timed in) | frame ms (spread) | acne % | leak % | "
-             "light in shadows % | off the area light % |", "|---|---|---|---|---|---|---|"]
+             "light in shadows % | off the area light % | texels per pixel (median) |",
+             "|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        lines.append("| %s | %s | %s | %s | %s | %s | %s |" % (
+        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s |" % (
             r["showcase.technique"], passes(r), frame(r), cell(r, "acne_%"), cell(r, "leak_%"),
-            cell(r, "shadow_light_%"), cell(r, "area_diff_%")))
+            cell(r, "shadow_light_%"), cell(r, "area_diff_%"), cell(r, "texels_per_pixel", "%.3f")))
     return lines
 
 
@@ -177,7 +178,12 @@ def main():
             "Defaults: 1024-texel maps, 3-texel filters (`showcase.kernel`, `showcase.map_size`). "
             "Acne and leak are against a point light at the spot light's centre (cube_map: the point "
             "light; cascades: the sun); *off the area light* is the mean difference from the spot "
-            "light's disk (0.6 units), the truth for a light with a size.", ""]
+            "light's disk (0.6 units), the truth for a light with a size. *Texels per pixel* is lab 11's "
+            "measure, min(tx, ty), the texels of the map a step of one pixel right and up moves, through the "
+            "map each pixel is drawn from, over the light-facing pixels a map holds (n/a: no map; cube_map: "
+            "the first face that holds the pixel). *lispsm* is lab 11's LiSPSM, one map; *sdsm* is lab 11's "
+            "cascades with logarithmic splits fitted to the frame's depth bounds (both: the sun, 30 m of shadow "
+            "distance, as *cascades*, lab 10's).", ""]
     page += main_table(everything)
     page += ["", "## Seed 000's tables: filter width and map size", "",
              "Frames per second, and in brackets frame time relative to the first row of the column.", ""]

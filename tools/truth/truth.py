@@ -18,6 +18,9 @@ supports (tools/truth/scenes.py, fixed seeds), the lab's solution renders the sc
   leak    the light leak over all shadowed pixels, at most this (percent);
   area_light  (lights with a size) the mean |visibility - area-light reference|, at most this (percent).
 
+Then the truths derived from geometry alone, which the labs' own tests hold (tests named ...Truth, run on
+each solution's test binary: lab 11's texels per pixel on a ground plane), listed under the table.
+
 Every failing row is printed with the command that reproduces it. --mutant runs one of the mutants
 of tests/mutants/ instead of the solution, on its lab's techniques only (a C++ mutant's own build, or
 the solution with the mutant's shader folder searched first), and then passes only if some row
@@ -89,6 +92,34 @@ def run_one(build, out, tech, light_type, seed, exe, overlay):
     if "area_light" in b and (row["area_light"] is None or row["area_light"] > b["area_light"]):
         row["failures"].append(f"|visibility - area light| {row['area_light']}%, allowed {b['area_light']}%")
     return row
+
+
+def geometry_truths(build, labs):
+    """The truths derived from geometry alone, which the labs' own tests hold (tests named ...Truth: lab 11's
+    texels per pixel on a ground plane for the uniform map, logarithmic cascades and LiSPSM at n_opt,
+    tests/11_warping): each solution's test binary runs them. Returns rows (lab, test, verdict)."""
+    rows = []
+    for nn in labs:
+        exe = build / f"lab{nn}_solution_tests"
+        if not exe.exists():
+            continue
+        listed = subprocess.run([str(exe), "--gtest_list_tests", "--gtest_filter=*Truth"], capture_output=True,
+                                text=True, timeout=60).stdout
+        suite = ""
+        for line in listed.splitlines():
+            if not line.startswith(" "):
+                suite = line.strip()
+                continue
+            name = suite + line.strip()
+            try:
+                proc = subprocess.run([str(exe), "--gtest_filter=" + name], capture_output=True, text=True,
+                                      timeout=300)
+                verdict = "pass" if proc.returncode == 0 else "FAIL: " + " ".join(
+                    ln.strip() for ln in proc.stdout.splitlines() if "WRONG" in ln or "ERROR" in ln)[:300]
+            except subprocess.TimeoutExpired:
+                verdict = "FAIL: no answer in 300 s"
+            rows.append({"lab": nn, "test": name, "verdict": verdict, "command": f"{exe} --gtest_filter={name}"})
+    return rows
 
 
 def comparisons(rows, techniques):
@@ -172,6 +203,16 @@ def main():
     extra = comparisons(rows, techniques)
     bounds, body = table(rows, techniques)
     print(body)
+    # (a mutant's own tests would judge it by its lab's tests, not by this suite: the solution's only)
+    geometry = [] if args.mutant or args.technique else geometry_truths(
+        build, sorted({t["lab"] for t in load_techniques()} if not args.lab else {args.lab}))
+    geo = "\n".join(["| lab | test (the lab's solution tests) | verdict |", "|---|---|---|"] +
+                     [f"| {g['lab']} | {g['test']} | {g['verdict']} |" for g in geometry])
+    if geometry:
+        print("\nTruths from the geometry alone (the labs' own tests):\n" + geo)
+    for g in geometry:
+        if g["verdict"] != "pass":
+            extra.append(f"{g['test']}: {g['verdict']}\n  {g['command']}")
     failed = [r for r in rows if r["failures"]]
     for r in failed:
         print(f"\nFAIL {r['technique']} / {r['light']} scene {r['seed']}: {'; '.join(r['failures'])}\n  {r['command']}")
@@ -182,7 +223,11 @@ def main():
             "# The truth table\n\nMade by `./workbook truth --table` (tools/truth/truth.py) on the generated scenes "
             "of tools/truth/scenes.py, at " + SIZE + " with each technique's settings below; "
             "see [docs/truth.md](truth.md) for how each number is measured.\n\n## Bounds\n\n" + bounds +
-            "\n\n## Measured\n\n" + body + "\n")
+            "\n\n## Measured\n\n" + body + "\n" +
+            ("\n## Truths from the geometry alone\n\nThe labs' own tests named ...Truth, run on each solution "
+             "(tests/11_warping: texels per pixel on a ground plane, derived in double for the uniform map, "
+             "logarithmic cascades and LiSPSM at n_opt; every sampled ground pixel within the bound).\n\n" + geo + "\n"
+             if geometry else ""))
         print("wrote", args.table)
     n_fail = len(failed) + len(extra)
     print(f"\n{len(rows) - len(failed)} of {len(rows)} rows within bounds" + (f", {len(extra)} comparisons failed"

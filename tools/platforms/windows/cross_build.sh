@@ -8,6 +8,7 @@
 #   tools/platforms/windows/cross_build.sh [WORK]      (WORK: default build-windows/; the first time,
 #                                             about 10 minutes of dependencies, most of it Embree)
 #   WB_CROSS_CHECK_ONLY=1 ...: after a full run, rebuild wb_check alone and run the check cases again
+#   WB_CROSS_LABS="11" ...: that lab's builds and pictures, with labs 01 and 03 (the check cases need them)
 # The dependencies come from Debian's source packages (apt-get source: a deb-src line is added):
 # GLFW 3.3.8, Dear ImGui 1.86, GoogleTest 1.12.1 and Embree 3.13.5 (SSE2, triangles, internal
 # tasking; three CMake-only fixes for MinGW in embree-3.13.5-mingw.patch), built static.
@@ -75,8 +76,12 @@ cp -r /usr/include/glm /usr/include/stb /usr/include/nlohmann "$WB_WIN_PREFIX/in
 cp -r /usr/share/cmake/glm /usr/share/cmake/nlohmann_json "$WB_WIN_PREFIX/share/cmake/"
 
 [ -d "$ROOT/solutions" ] || { echo "cross_build: the instructor edition is needed (solutions and check cases)" >&2; exit 1; }
-labs=(); for d in "$ROOT"/labs/[0-9][0-9]_*/; do labs+=("$(basename "$d")"); done
 case_labs=(01 03)  # (a lab with C++ exercises, and one whose exercises are all GLSL)
+# (WB_CROSS_LABS="11": that lab's builds and pictures, and the check cases' labs, whose runs need theirs)
+labs=(); for d in "$ROOT"/labs/[0-9][0-9]_*/; do
+  nn=$(basename "$d" | cut -c1-2)
+  [ -z "${WB_CROSS_LABS:-}" ] || [[ " $WB_CROSS_LABS ${case_labs[*]} " == *" $nn "* ]] && labs+=("$(basename "$d")")
+done
 cases=(); for nn in "${case_labs[@]}"; do
   for f in "$ROOT"/tests/check_cases/"$nn"_*/*.case; do cases+=("$nn:$(basename "$f" .case)"); done
 done
