@@ -29,6 +29,11 @@ long long varySeed() {
   return s && *s ? std::atoll(s) : -1;
 }
 
+bool replaysFailedUse(const std::string& id) {
+  const char* failed = std::getenv("WB_REPLAY_USES");
+  return varySeed() >= 0 && failed && ("," + std::string(failed) + ",").find("," + id + ",") != std::string::npos;
+}
+
 static std::vector<std::string> varyArgs() {
   return varySeed() >= 0 ? std::vector<std::string>{"--vary", std::to_string(varySeed())} : std::vector<std::string>{};
 }

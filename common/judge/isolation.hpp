@@ -17,6 +17,12 @@ namespace wb::test {
 /// The seed of grading-time variations (WB_VARY_SEED, set by the grader), or -1.
 long long varySeed();
 
+/// True when the grader replays exercise `id`'s recorded results in this test's runs (WB_REPLAY_USES,
+/// under variations): `id` failed its own tests, so a property measured on the lab's whole pipeline
+/// is partly its doing, and a test of another exercise that measures one should skip (its scene tests,
+/// drawn beside the reference on the same inputs, still judge it).
+bool replaysFailedUse(const std::string& id);
+
 /// Variables set for a lab run, over the test's own environment.
 using Env = std::vector<std::pair<std::string, std::string>>;
 

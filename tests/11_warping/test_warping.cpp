@@ -378,6 +378,9 @@ TEST(Lab11, Ex11_2_MeasuredPartsAgainstTheMapSize) {
 // gives the worst pixels (the 1st percentile of texels per pixel over the ground) at least twice the
 // texels of the uniform map (the solution, at 480x270: 0.0543 and 0.262, 4.8 times).
 TEST(Lab11, Ex11_4_MeasuredTheWarpRaisesTheWorstPixels) {
+  // (Where 11.3 failed its own tests, the grader replays its n here, and the gain would be its doing:
+  // 11.4's scene and layer-1 tests judge it then.)
+  if (wb::test::replaysFailedUse("11.3")) GTEST_SKIP() << "11.3 failed its own tests: its n decides this gain";
   std::string failure;
   const std::string orchard = "warp_orchard.json";
   const double uniform = groundQuantile("11.4", "orchard_uniform",
@@ -618,6 +621,7 @@ TEST(Lab11, Ex11_H1_SwitchWhereTheMapsWereFitted) {
 // pixel over the ground must be at least 1.15 times that of the same cascades between near and far
 // (the solution at 480x270: 1.01 and 0.775, 1.30 times; the bug as handed out: 0.838, 1.08 times).
 TEST(Lab11, Ex11_H1_MeasuredSdsmGivesMoreTexels) {
+  if (wb::test::replaysFailedUse("11.6")) GTEST_SKIP() << "11.6 failed its own tests: its splits decide this gain";
   std::string failure;
   const std::vector<std::string> common = {"warp.view=density", "warp.scheme=csm", "csm.lambda=1"};
   auto with = [&](const char* sdsm) {

@@ -14,7 +14,7 @@ import zipfile
 from .chunks import BUILD_TIMED_OUT, DEFAULT_BUILD_TIMEOUT, build_failure, chunk, keep_only_chunks
 from .common import MAX_FILE_BYTES, ROOT, log
 from .outcomes import (CUT_SHORT, copy_images, explanation, grader_failed, gtest_failures, hung_by_itself,
-                       left_as_stub, named_limit, runs_app, supervised_run, tag_id)
+                       left_as_stub, named_limit, runs_app, stopped_itself, supervised_run, tag_id)
 from .report import Results, first_line
 from .sandbox import minimal_env, run_killable, sweep_leftovers
 from .heldout import plan_requests
@@ -256,12 +256,14 @@ class Grader:
                            self.ws.judge_bin / "test-output")
         return ok, failures, kept, hidden_result, has_hidden
 
-    def grade_alone(self, lab, e, mine, tests, replay_uses=()):
+    def grade_alone(self, lab, e, mine, tests, replay_uses=(), stopped=()):
         """Grades C++ exercise `e` with only its own chunk from `mine`, and those of the exercises it
         takes its inputs from ("uses" in the manifest: the judge replays those too), the stubs for the
-        others."""
+        others, and for a used exercise that stops whatever runs it (`stopped`: a crash or a loop in its
+        own tests): the judge replays its stub's "not implemented" in both renders, which a lab that
+        draws without it (lab 11) judges `e` on."""
         stub = ROOT / "labs" / lab["name"] / "exercise.cpp"
-        keep = {e["id"], *e.get("uses", [])}
+        keep = {e["id"], *(u for u in e.get("uses", []) if u not in stopped)}
         hybrid = keep_only_chunks(mine, stub.read_text(), keep, self.ws.lab_dir(lab["name"]) / "exercise.cpp") \
             if stub.exists() and chunk(mine, e["id"]) else None
         if hybrid is None:
@@ -401,8 +403,9 @@ class Grader:
                   and not left_as_stub(outcome[e["id"]], mine_cpp, stub_cpp, e["id"])]
         if not failed or len(failing) < 2 or "exercise.cpp" not in files:
             return
+        stopped = {i for i in cpp_ids if i in broken or stopped_itself(outcome[i])}
         for e in failed:
-            alone = self.grade_alone(lab, e, mine_cpp, tests, failed_uses[e["id"]])
+            alone = self.grade_alone(lab, e, mine_cpp, tests, failed_uses[e["id"]], stopped)
             if alone is not None:
                 outcome[e["id"]] = alone
 

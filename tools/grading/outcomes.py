@@ -130,6 +130,14 @@ def hung_by_itself(outcome):
     return any("timed out after" in msg and test and not test_runs_app(test) for test, msg in failures[:1])
 
 
+def stopped_itself(outcome):
+    """Whether the exercise's own tests stopped it (a crash or its time limit) in a test that calls only
+    its function: its code stops whatever runs it, so an exercise graded alone with it would stop too."""
+    _, failures, _, _, _ = outcome
+    return any(("timed out after" in msg or "crashed (" in msg) and test and not test_runs_app(test)
+               for test, msg in failures)
+
+
 def left_as_stub(outcome, mine, stub, ex_id):
     """Whether exercise `ex_id` failed only as not implemented with its chunk of exercise.cpp byte for
     byte the stub's: graded alone it would be the stub again, and say the same."""
