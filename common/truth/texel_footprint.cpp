@@ -64,42 +64,50 @@ int sliceOf(const LightView& light, const glm::vec3& p) {
   return -1;
 }
 
+// The light-facing surface at pixel (x, y) as the maps see it: its world point, the world steps to its
+// neighbours along x and y, and the first map it can be drawn from (for cascades, its slice's).
+struct PixelSurface {
+  glm::vec3 p, ex, ey;
+  size_t first = 0;
+  bool cascades = false;
+};
+
+// False where no map was drawn, the pixel holds no light-facing surface with a neighbour, or no
+// cascade's slice holds it.
+bool pixelSurface(const LightView& light, const std::vector<glm::vec4>& positions, int width, int height, int x, int y,
+                  PixelSurface& s) {
+  const glm::vec4& q = positions[size_t(y) * size_t(width) + size_t(x)];
+  if (!light.hasMap() || light.size <= 0 || q.w == 0 || !step(positions, width, height, x, y, 1, 0, s.ex) ||
+      !step(positions, width, height, x, y, 0, 1, s.ey))
+    return false;
+  s.p = glm::vec3(q);
+  s.cascades = !light.outlines.empty() && light.outlines.size() == light.viewProj.size();
+  if (!s.cascades) return true;
+  const int k = sliceOf(light, s.p);
+  s.first = size_t(std::max(k, 0));
+  return k >= 0;
+}
+
 }  // namespace
 
 double texelPixels(const LightView& light, const std::vector<glm::vec4>& positions, int width, int height, int x,
                    int y) {
-  const glm::vec4& q = positions[size_t(y) * size_t(width) + size_t(x)];
-  glm::vec3 ex, ey;
-  if (!light.hasMap() || light.size <= 0 || q.w == 0 || !step(positions, width, height, x, y, 1, 0, ex) ||
-      !step(positions, width, height, x, y, 0, 1, ey))
-    return 0;
-  const glm::vec3 p(q);
-  const bool cascades = !light.outlines.empty() && light.outlines.size() == light.viewProj.size();
-  size_t first = 0, last = light.viewProj.size();
-  if (cascades) {
-    const int k = sliceOf(light, p);
-    if (k < 0) return 0;
-    first = size_t(k), last = std::min(light.viewProj.size(), size_t(k) + 2);
-  }
+  PixelSurface s;
+  if (!pixelSurface(light, positions, width, height, x, y, s)) return 0;
+  // (a cascade's pixel may be drawn from its slice's map or, in a blend band, the next one)
+  const size_t last = s.cascades ? std::min(light.viewProj.size(), s.first + 2) : light.viewProj.size();
   double most = 0;
-  for (size_t k = first; k < last; ++k) most = std::max(most, footprint(light, k, p, ex, ey));
+  for (size_t k = s.first; k < last; ++k) most = std::max(most, footprint(light, k, s.p, s.ex, s.ey));
   return most;
 }
 
 double texelsPerPixel(const LightView& light, const std::vector<glm::vec4>& positions, int width, int height, int x,
                       int y) {
-  const glm::vec4& q = positions[size_t(y) * size_t(width) + size_t(x)];
-  glm::vec3 ex, ey;
-  if (!light.hasMap() || light.size <= 0 || q.w == 0 || !step(positions, width, height, x, y, 1, 0, ex) ||
-      !step(positions, width, height, x, y, 0, 1, ey))
-    return 0;
-  const glm::vec3 p(q);
-  const bool cascades = !light.outlines.empty() && light.outlines.size() == light.viewProj.size();
-  const int slice = cascades ? sliceOf(light, p) : -1;
-  if (cascades && slice < 0) return 0;
-  for (size_t k = cascades ? size_t(slice) : 0; k < light.viewProj.size(); ++k) {
+  PixelSurface s;
+  if (!pixelSurface(light, positions, width, height, x, y, s)) return 0;
+  for (size_t k = s.first; k < light.viewProj.size(); ++k) {
     glm::dvec2 a, b;
-    if (jacobian(light, k, p, ex, ey, a, b)) return std::min(glm::length(a), glm::length(b));
+    if (jacobian(light, k, s.p, s.ex, s.ey, a, b)) return std::min(glm::length(a), glm::length(b));
   }
   return 0;
 }

@@ -21,6 +21,12 @@ glm::mat4 mapAbove(float lo, float extent) {
   return glm::ortho(lo, lo + extent, -lo - extent, -lo, 1.0f, 20.0f) * view;
 }
 
+// A cascade's slice of the view: a box from x = 0 to 9, y = -1 to 1, z from z0 to z1.
+std::array<glm::vec3, 8> slice(float z0, float z1) {
+  return {glm::vec3(0, -1, z0), glm::vec3(9, -1, z0), glm::vec3(9, 1, z0), glm::vec3(0, 1, z0),
+          glm::vec3(0, -1, z1), glm::vec3(9, -1, z1), glm::vec3(9, 1, z1), glm::vec3(0, 1, z1)};
+}
+
 wb::LightView oneMap(float extent, int size) {
   wb::LightView v;
   v.viewProj = {mapAbove(-1, extent)}, v.target = GL_TEXTURE_2D, v.texture = 1, v.size = size;
@@ -56,11 +62,6 @@ TEST(TexelFootprint, ACascadesPixelCountsTheCoarserOfItsSliceAndTheNext) {
   wb::LightView v = oneMap(100, 2000);
   v.viewProj.push_back(mapAbove(-1, 100)), v.size = 2000, v.target = GL_TEXTURE_2D_ARRAY;
   v.viewProj[1] = glm::scale(glm::mat4(1), glm::vec3(0.25f, 0.25f, 1)) * v.viewProj[1];  // 4x wider texels
-  auto slice = [](float z0, float z1) {
-    return std::array<glm::vec3, 8>{glm::vec3(0, -1, z0), glm::vec3(9, -1, z0), glm::vec3(9, 1, z0),
-                                    glm::vec3(0, 1, z0),  glm::vec3(0, -1, z1), glm::vec3(9, -1, z1),
-                                    glm::vec3(9, 1, z1),  glm::vec3(0, 1, z1)};
-  };
   v.outlines = {slice(0, 1), slice(1, 3)};
   const auto pos = ground(0.05f);                                   // rows 0..20 lie in slice 0, 21..47 in slice 1
   EXPECT_NEAR(wb::texelPixels(v, pos, kW, kH, 10, 10), 4.0, 1e-2);  // a blend band may reach cascade 1
@@ -97,11 +98,6 @@ TEST(TexelFootprint, TexelsPerPixelReadsTheSlicesOwnCascade) {
   wb::LightView v = oneMap(100, 2000);  // cascade 0: one texel a pixel; cascade 1: a quarter
   v.viewProj.push_back(glm::scale(glm::mat4(1), glm::vec3(0.25f, 0.25f, 1)) * mapAbove(-1, 100));
   v.target = GL_TEXTURE_2D_ARRAY;
-  auto slice = [](float z0, float z1) {
-    return std::array<glm::vec3, 8>{glm::vec3(0, -1, z0), glm::vec3(9, -1, z0), glm::vec3(9, 1, z0),
-                                    glm::vec3(0, 1, z0),  glm::vec3(0, -1, z1), glm::vec3(9, -1, z1),
-                                    glm::vec3(9, 1, z1),  glm::vec3(0, 1, z1)};
-  };
   v.outlines = {slice(0, 1), slice(1, 3)};
   const auto pos = ground(0.05f);  // rows 0..20 lie in slice 0, 21..47 in slice 1
   EXPECT_NEAR(wb::texelsPerPixel(v, pos, kW, kH, 10, 10), 1.0, 1e-3);
